@@ -1,0 +1,43 @@
+// An 8-bit RGB image and its file I/O through OpenImageIO.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tmu {
+
+struct Rgb8 {
+  uint8_t r = 0, g = 0, b = 0;
+  friend bool operator==(const Rgb8&, const Rgb8&) = default;
+};
+
+// Packs to / unpacks from the Rgb888 port format (R in 23:16, G in 15:8, B in 7:0).
+constexpr uint32_t pack_rgb(Rgb8 c) { return (uint32_t{c.r} << 16) | (uint32_t{c.g} << 8) | c.b; }
+constexpr Rgb8 unpack_rgb(uint32_t v) {
+  return {static_cast<uint8_t>(v >> 16), static_cast<uint8_t>(v >> 8), static_cast<uint8_t>(v)};
+}
+
+struct ImageRgb8 {
+  int width = 0;
+  int height = 0;
+  std::vector<Rgb8> pixels;  // row-major
+
+  ImageRgb8() = default;
+  ImageRgb8(int w, int h) : width(w), height(h), pixels(static_cast<size_t>(w) * h) {}
+  Rgb8& at(int x, int y) { return pixels[static_cast<size_t>(y) * width + x]; }
+  const Rgb8& at(int x, int y) const { return pixels[static_cast<size_t>(y) * width + x]; }
+  friend bool operator==(const ImageRgb8&, const ImageRgb8&) = default;
+};
+
+// Reads any format OpenImageIO knows; grey is replicated to RGB, alpha and extra channels
+// are dropped, other bit depths are converted to 8 bits. Throws InputError naming the file.
+ImageRgb8 read_image(const std::string& path);
+
+// Writes an image (format from the extension) atomically. Throws InputError naming the file.
+void write_image(const std::string& path, const ImageRgb8& image);
+
+// Peak signal-to-noise ratio over all RGB samples, in dB (infinity when identical).
+double psnr(const ImageRgb8& a, const ImageRgb8& b);
+
+}  // namespace tmu

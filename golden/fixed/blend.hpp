@@ -1,0 +1,26 @@
+// The one blend rule of the project: filter weights are UQ0.8 fractions f (0..255), the
+// pair of weights applied to two samples is (256 - f, f), products are kept exact and the
+// sum of all weighted samples is rounded once, half up, back to the sample format.
+// Bilinear: 2 x 2 weights -> one rounding of a 16-fraction-bit sum. The trilinear unit
+// extends the same rule with a third weight and one rounding of a 24-fraction-bit sum.
+#pragma once
+
+#include <cstdint>
+
+#include "fixed/fixed.hpp"
+
+namespace tmu::fx {
+
+inline constexpr int kWeightOne = 256;  // the weight pair (256 - f, f) sums to this
+
+// Bilinear blend of one 8-bit channel. c00 at (x0, y0), c10 at (x1, y0), c01 at (x0, y1),
+// c11 at (x1, y1); fx, fy in 0..255. Result 0..255, exact except for the final rounding.
+constexpr uint32_t bilerp_u8(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, uint32_t fx,
+                             uint32_t fy) {
+  const int64_t top = int64_t{c00} * (kWeightOne - fx) + int64_t{c10} * fx;  // UQ8.8
+  const int64_t bot = int64_t{c01} * (kWeightOne - fx) + int64_t{c11} * fx;  // UQ8.8
+  const int64_t sum = top * (kWeightOne - fy) + bot * fy;                     // UQ8.16
+  return static_cast<uint32_t>(shift_right_round(sum, 16, Round::kHalfUp));
+}
+
+}  // namespace tmu::fx

@@ -1,0 +1,20 @@
+#include "blocks/registry.hpp"
+
+#include <stdexcept>
+
+#include "blocks/ccc_decoder_block.hpp"
+
+namespace tmu::tb {
+
+std::vector<BlockInfo> block_list() {
+  return {{"ccc", "CCC decoder (000 §3, Fig. 5): block word + texel address -> RGB888"}};
+}
+
+std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& options) {
+  if (name == "ccc") return std::make_unique<CccDecoderBlock>(options.seed);
+  std::string known;
+  for (const BlockInfo& b : block_list()) known += (known.empty() ? "" : ", ") + b.name;
+  throw std::invalid_argument("unknown block '" + name + "' (blocks: " + known + ")");
+}
+
+}  // namespace tmu::tb

@@ -1,0 +1,17 @@
+// texsim's subcommands; each registers itself on the CLI11 app and returns its exit code
+// through the shared slot.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace tmu::texsim {
+
+struct ExitCode {
+  int value = 0;
+};
+
+void add_cosim_command(CLI::App& app, ExitCode& exit_code);
+void add_ccc_command(CLI::App& app, ExitCode& exit_code);
+void add_formats_command(CLI::App& app, ExitCode& exit_code);
+
+}  // namespace tmu::texsim

@@ -1,0 +1,36 @@
+// texsim: the user's entry point to the texture-mapping unit models.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <exception>
+
+#include "common/error.hpp"
+#include "texsim/commands.hpp"
+
+// Debian's libsystemc provides main() and requires sc_main; texsim has its own main and runs
+// SystemC only inside the hls runner, so this is never called.
+extern "C" int sc_main(int, char**) { return 1; }
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "texsim: bit-accurate golden, SystemC (hls) and Verilated RTL models of a texture-mapping "
+      "unit, co-simulated and compared bit for bit."};
+  app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "Help for every command");
+  tmu::texsim::ExitCode exit_code;
+  tmu::texsim::add_cosim_command(app, exit_code);
+  tmu::texsim::add_ccc_command(app, exit_code);
+  tmu::texsim::add_formats_command(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const tmu::InputError& e) {
+    fmt::print(stderr, "texsim: error: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "texsim: error: {}\n", e.what());
+    return 2;
+  }
+  return exit_code.value;
+}
