@@ -43,12 +43,15 @@ SC_MODULE(CccDecoderSc) {
  private:
   void run() {
     SmallFifo<uint32_t, 2> out;
-    clut_ready_o.write(true);
+    // Not ready in reset: a ready port promises the next edge will take the input, and the
+    // edge that leaves reset is spent here.
+    clut_ready_o.write(false);
     req_ready_o.write(false);
     out_valid_o.write(false);
     out_rgb_o.write(0);
     wait();
     while (true) {
+      clut_ready_o.write(true);
       req_ready_o.write(out.size() <= 1);  // room for one more whatever the output does
       out_valid_o.write(!out.empty());
       out_rgb_o.write(out.empty() ? 0u : out.front());

@@ -135,6 +135,26 @@ Txn clut_write_item(uint8_t index, uint32_t rgb) {
   return t;
 }
 
+ImageRgb8 decode_with_engine(const ccc::Texture& tex, Engine& engine, RunResult* run) {
+  std::vector<Txn> items;
+  items.reserve(fmts::kClutEntries + size_t{tex.width} * tex.height);
+  for (int i = 0; i < fmts::kClutEntries; ++i) {
+    items.push_back(clut_write_item(static_cast<uint8_t>(i), pack_rgb(tex.clut[static_cast<size_t>(i)])));
+  }
+  for (uint32_t y = 0; y < tex.height; ++y) {
+    for (uint32_t x = 0; x < tex.width; ++x) {
+      items.push_back(decode_item(tex.block_word(x / 4, y / 4), 4 * (y % 4) + x % 4));
+    }
+  }
+  RunResult r = engine.run(items, RunOptions{});
+  if (!r.error.empty()) throw std::runtime_error(engine.name() + " decoder run failed: " + r.error);
+  ImageRgb8 img(static_cast<int>(tex.width), static_cast<int>(tex.height));
+  if (r.outputs.size() != img.pixels.size()) throw std::runtime_error(engine.name() + ": wrong output count");
+  for (size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = unpack_rgb(static_cast<uint32_t>(r.outputs[i].f[0]));
+  if (run) *run = std::move(r);
+  return img;
+}
+
 CccDecoderBlock::CccDecoderBlock(uint64_t seed) : seed_(seed) {}
 
 const Schema& CccDecoderBlock::inputs() const { return kInputs; }

@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include "ccc/ccc_texture.hpp"
 #include "harness/block.hpp"
 #include "harness/rtl_runner.hpp"
 
@@ -38,6 +39,10 @@ class CccDecoderBlock : public Block {
 // Item constructors, for tests and tools.
 Txn decode_item(uint32_t block_word, unsigned texel);
 Txn clut_write_item(uint8_t index, uint32_t rgb);
+
+// Decodes every texel of `tex` through a decoder engine (CLUT load, then the texels in
+// row-major order, no stalls). `run` receives the engine's run (timing, errors).
+ImageRgb8 decode_with_engine(const ccc::Texture& tex, Engine& engine, RunResult* run = nullptr);
 
 // The rtl engine for any Verilated model with the decoder's ports (tests use a mutant).
 template <class Model>

@@ -9,6 +9,10 @@
 #include <iostream>
 #include <string>
 
+// Debian's libsystemc provides a main() that calls sc_main, so the library needs the symbol.
+// Our programs have their own main and start SystemC only here, so it is never called.
+extern "C" int sc_main(int, char**) { return 1; }
+
 namespace tmu::tb {
 namespace {
 

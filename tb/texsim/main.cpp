@@ -7,10 +7,6 @@
 #include "common/error.hpp"
 #include "texsim/commands.hpp"
 
-// Debian's libsystemc provides main() and requires sc_main; texsim has its own main and runs
-// SystemC only inside the hls runner, so this is never called.
-extern "C" int sc_main(int, char**) { return 1; }
-
 int main(int argc, char** argv) {
   CLI::App app{
       "texsim: bit-accurate golden, SystemC (hls) and Verilated RTL models of a texture-mapping "
@@ -20,6 +16,7 @@ int main(int argc, char** argv) {
   tmu::texsim::ExitCode exit_code;
   tmu::texsim::add_cosim_command(app, exit_code);
   tmu::texsim::add_ccc_command(app, exit_code);
+  tmu::texsim::add_pattern_command(app, exit_code);
   tmu::texsim::add_formats_command(app, exit_code);
   try {
     app.parse(argc, argv);

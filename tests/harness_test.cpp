@@ -1,0 +1,167 @@
+// The harness itself: the scoreboard catches what it must, the driver neither drops nor
+// duplicates, vector files round-trip and reject bad input with a named field.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "common/error.hpp"
+#include "harness/handshake_driver.hpp"
+#include "harness/scoreboard.hpp"
+#include "harness/vector_file.hpp"
+
+namespace tmu::tb {
+namespace {
+
+const Schema kOut({{"rgb", fx::UQ(24, 0)}, {"flag", fx::UQ(1, 0)}});
+
+RunResult outputs_of(std::initializer_list<uint64_t> values) {
+  RunResult r;
+  for (uint64_t v : values) {
+    Txn t;
+    t.f[0] = v;
+    r.outputs.push_back(t);
+    r.output_cycles.push_back(r.outputs.size());
+  }
+  return r;
+}
+
+// --- scoreboard -------------------------------------------------------------------------
+
+TEST(ScoreboardTest, IdenticalRunsMatch) {
+  const auto a = outputs_of({1, 2, 3});
+  EXPECT_TRUE(compare(kOut, a, a).match());
+  EXPECT_EQ(compare(kOut, a, a).compared, 3u);
+}
+
+TEST(ScoreboardTest, OneFlippedBitIsCaughtWithItsIndexAndField) {
+  const auto golden = outputs_of({0x111111, 0x222222, 0x333333});
+  auto rtl = golden;
+  rtl.outputs[1].f[1] ^= 1;  // the second field of the second transaction
+  const Comparison c = compare(kOut, golden, rtl);
+  EXPECT_FALSE(c.match());
+  ASSERT_TRUE(c.first.has_value());
+  EXPECT_EQ(c.first->output_index, 1u);
+  EXPECT_EQ(c.first->fields, std::vector<int>{1});
+  EXPECT_NE(mismatch_table(kOut, *c.first).find("differs"), std::string::npos);
+}
+
+TEST(ScoreboardTest, MissingExtraAndReorderedOutputsFail) {
+  const auto golden = outputs_of({1, 2, 3});
+  EXPECT_FALSE(compare(kOut, golden, outputs_of({1, 2})).match());        // dropped
+  EXPECT_FALSE(compare(kOut, golden, outputs_of({1, 2, 3, 3})).match());  // duplicated
+  EXPECT_FALSE(compare(kOut, golden, outputs_of({1, 3, 2})).match());     // reordered
+  const Comparison missing = compare(kOut, golden, outputs_of({1, 2}));
+  ASSERT_TRUE(missing.first.has_value());
+  EXPECT_FALSE(missing.first->got.has_value());
+}
+
+TEST(ScoreboardTest, CountersAndEngineErrorsFail) {
+  auto golden = outputs_of({1});
+  golden.counters = {{"hits", 5}};
+  auto rtl = golden;
+  rtl.counters = {{"hits", 6}};
+  EXPECT_FALSE(compare(kOut, golden, rtl).match());
+  rtl.counters = {};
+  EXPECT_FALSE(compare(kOut, golden, rtl).match());  // a counter the reference predicts is missing
+  rtl = golden;
+  rtl.error = "deadlock";
+  EXPECT_FALSE(compare(kOut, golden, rtl).match());
+}
+
+// --- handshake driver -------------------------------------------------------------------
+
+// A one-register model of a block that takes an item when empty or being emptied.
+TEST(HandshakeDriverTest, StallsNeitherDropNorDuplicate) {
+  std::vector<Txn> items(500);
+  for (size_t i = 0; i < items.size(); ++i) items[i].f[0] = i;
+  RunOptions opt;
+  opt.stalls = {42, 0.5, 0.5};
+  HandshakeDriver d(items, items.size(), opt);
+  bool full = false;
+  Txn reg;
+  while (!d.done()) {
+    const Txn* in = d.begin_cycle();
+    const bool ready = !full || d.out_ready();
+    const bool out_fire = full && d.out_ready();
+    const Txn out = reg;
+    const bool in_fire = in != nullptr && ready;
+    if (out_fire) full = false;
+    if (in_fire) {
+      reg = *in;
+      full = true;
+    }
+    d.end_cycle(in_fire, out_fire ? &out : nullptr);
+  }
+  for (size_t i = 0; i < items.size(); ++i) EXPECT_EQ(d.result().outputs[i].f[0], i);
+  EXPECT_GT(d.cycle(), items.size() * 3 / 2);  // the stalls really happened
+}
+
+TEST(HandshakeDriverTest, DuplicateOutputThrows) {
+  std::vector<Txn> items(1);
+  HandshakeDriver d(items, 1, RunOptions{});
+  const Txn out;
+  d.begin_cycle();
+  d.end_cycle(true, &out);
+  d.begin_cycle();
+  EXPECT_THROW(d.end_cycle(false, &out), std::runtime_error);
+}
+
+TEST(HandshakeDriverTest, DeadlockThrows) {
+  std::vector<Txn> items(1);
+  RunOptions opt;
+  opt.max_idle_cycles = 10;
+  HandshakeDriver d(items, 1, opt);
+  EXPECT_THROW(
+      {
+        for (int i = 0; i < 20; ++i) {
+          d.begin_cycle();
+          d.end_cycle(false, nullptr);
+        }
+      },
+      std::runtime_error);
+}
+
+// --- vector files -----------------------------------------------------------------------
+
+const Schema kIn({{"op", fx::UQ(1, 0)}, {"u", fx::SQ(16, 8)}, {"rgb", fx::UQ(24, 0)}});
+
+std::string temp_file(const std::string& name, const std::string& content) {
+  const auto path = std::filesystem::temp_directory_path() / ("tmu_vec_" + name);
+  std::ofstream(path) << content;
+  return path.string();
+}
+
+TEST(VectorFileTest, RoundTripsAndAcceptsAnyColumnOrder) {
+  std::vector<Txn> items(3);
+  items[0].f = {1, 0xFFFF80, 0xABCDEF};
+  items[2].f = {0, 0x7FFFFF, 1};
+  const std::string path = temp_file("rt.csv", "");
+  write_vectors(path, kIn, items);
+  EXPECT_EQ(read_vectors(path, kIn), items);
+  const auto reordered = read_vectors(temp_file("order.csv", "# comment\nrgb,u\n0x10, -128\n"), kIn);
+  ASSERT_EQ(reordered.size(), 1u);
+  EXPECT_EQ(reordered[0].f[1], 0xFFFF80u);  // -0.5 as 24-bit two's complement
+  EXPECT_EQ(reordered[0].f[2], 0x10u);
+}
+
+TEST(VectorFileTest, BadInputNamesTheLineAndField) {
+  auto field_of = [](const std::string& content) {
+    try {
+      read_vectors(temp_file("bad.csv", content), kIn);
+    } catch (const InputError& e) {
+      return e.field() + " / " + e.reason();
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(field_of("op,bogus\n"), "line 1: header / unknown field 'bogus' (fields: op, u, rgb)");
+  EXPECT_NE(field_of("op,u\n2,0\n").find("line 2: op"), std::string::npos);        // out of range
+  EXPECT_NE(field_of("op,u\n0,0x1000000\n").find("line 2: u"), std::string::npos);  // too wide
+  EXPECT_NE(field_of("op,u\n0\n").find("line 2"), std::string::npos);              // short row
+  EXPECT_NE(field_of("op,u\n0,abc\n").find("not a number"), std::string::npos);
+  EXPECT_NE(field_of("").find("header"), std::string::npos);
+  EXPECT_THROW(read_vectors("/nonexistent/v.csv", kIn), InputError);
+}
+
+}  // namespace
+}  // namespace tmu::tb
