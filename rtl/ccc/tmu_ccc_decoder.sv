@@ -9,41 +9,39 @@
 /// no reset (it is a RAM): load every entry that will be read.
 ///
 /// Example: block 0x0A0B_0002, texel 1 -> decision bit 1 -> index 0x0B -> CLUT[0x0B].
-module tmu_ccc_decoder
-  import tmu_pkg::*;
-(
-  input  logic        clk_i,
-  input  logic        rst_ni,
+module tmu_ccc_decoder (
+  input  logic                 clk_i,
+  input  logic                 rst_ni,
 
   /// CLUT write port: entry clut_addr_i <= clut_rgb_i when clut_valid_i.
-  input  logic        clut_valid_i,
-  output logic        clut_ready_o,
-  input  clut_index_t clut_addr_i,
-  input  rgb888_t     clut_rgb_i,
+  input  logic                 clut_valid_i,
+  output logic                 clut_ready_o,
+  input  tmu_pkg::clut_index_t clut_addr_i,
+  input  tmu_pkg::rgb888_t     clut_rgb_i,
 
   /// Decode request.
-  input  logic        req_valid_i,
-  output logic        req_ready_o,
-  input  ccc_block_t  req_block_i,
-  input  ccc_texel_t  req_texel_i,
+  input  logic                 req_valid_i,
+  output logic                 req_ready_o,
+  input  tmu_pkg::ccc_block_t  req_block_i,
+  input  tmu_pkg::ccc_texel_t  req_texel_i,
 
   /// Decoded texel.
-  output logic        out_valid_o,
-  input  logic        out_ready_i,
-  output rgb888_t     out_rgb_o
+  output logic                 out_valid_o,
+  input  logic                 out_ready_i,
+  output tmu_pkg::rgb888_t     out_rgb_o
 );
 
-  rgb888_t     clut_q [ClutEntries];
-  logic        valid_q;
-  rgb888_t     rgb_q;
-  logic [15:0] decision_bits;
-  logic        decision;
-  clut_index_t index;
-  logic        req_fire;
+  tmu_pkg::rgb888_t     clut_q [tmu_pkg::ClutEntries];
+  logic                 valid_q;
+  tmu_pkg::rgb888_t     rgb_q;
+  logic [15:0]          decision_bits;
+  logic                 decision;
+  tmu_pkg::clut_index_t index;
+  logic                 req_fire;
 
   assign decision_bits = req_block_i[15:0];
   assign decision      = decision_bits[req_texel_i];
-  assign index    = decision ? req_block_i[23:16] : req_block_i[31:24];
+  assign index         = decision ? req_block_i[23:16] : req_block_i[31:24];
 
   // One output register: a new request enters when it is empty or being emptied.
   assign req_ready_o  = !valid_q || out_ready_i;
@@ -70,10 +68,14 @@ module tmu_ccc_decoder
   assign out_valid_o = valid_q;
   assign out_rgb_o   = rgb_q;
 
+  // Assertions run under Verilator (--assert); Yosys 0.23 cannot parse concurrent assertions
+  // and defines SYNTHESIS.
+`ifndef SYNTHESIS
   // A held output must not change until it is taken.
   property p_output_stable;
     @(posedge clk_i) disable iff (!rst_ni) (out_valid_o && !out_ready_i) |=> $stable(out_rgb_o);
   endproperty
   a_output_stable: assert property (p_output_stable);
+`endif
 
 endmodule

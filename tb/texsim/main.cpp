@@ -1,4 +1,5 @@
 // texsim: the user's entry point to the texture-mapping unit models.
+// Exit codes: 0 success (every comparison matched), 1 a model disagreed, 2 bad input or argument.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -21,7 +22,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // Help prints and exits 0; every bad argument exits 2 like every bad input file.
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const tmu::InputError& e) {
     fmt::print(stderr, "texsim: error: {}\n", e.what());
     return 2;

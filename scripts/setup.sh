@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages the project needs, with apt-get, when they are missing;
+# does nothing when they are all present.
+set -euo pipefail
+
+PACKAGES=(
+  cmake ninja-build g++ ccache pkg-config            # build
+  verilator libsystemc-dev                           # rtl and hls models
+  libglm-dev libopenimageio-dev                      # ideal models, image I/O
+  libcli11-dev nlohmann-json3-dev libfmt-dev         # texsim
+  libgtest-dev libbenchmark-dev                      # tests, benchmarks
+  yosys berkeley-abc                                 # synthesis check, cell counts
+  gtkwave                                            # viewing mismatch waveforms
+  python3 python3-matplotlib python3-numpy           # plots
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  echo "setup: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+sudo=""
+if [[ $(id -u) -ne 0 ]]; then sudo=sudo; fi
+$sudo apt-get update -q
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"

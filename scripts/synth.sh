@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Synthesizes every block of rtl/manifest.txt with Yosys: fails on latches or on any
+# problem `check -assert` finds, and prints two cell counts per block (generic gates):
+#   cells      every memory mapped to flip-flops (what an FPGA without RAM blocks would get)
+#   logic      memories kept as RAM macros ($mem cells), the logic around them only
+# Usage: scripts/synth.sh [TOP...]   (default: every block)
+set -euo pipefail
+rtl=$(cd "$(dirname "${BASH_SOURCE[0]}")/../rtl" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+count() { awk '/Number of cells:/ {n=$4} END {print n}' "$1"; }
+count_type() { awk -v t="$2" '$1 == t {n+=$2} END {print n+0}' "$1"; }
+
+printf "%-28s %10s %10s %10s %12s\n" block cells flops logic memory_bits
+status=0
+while read -r top sources; do
+  [[ -z "$top" || "$top" == \#* ]] && continue
+  [[ $# -gt 0 && ! " $* " =~ " $top " ]] && continue
+  read_cmd="read_verilog -sv $rtl/tmu_pkg.sv"
+  for s in $sources; do read_cmd+=" $rtl/$s"; done
+  # Latches are checked right after proc, where an inferred latch is a $dlatch cell.
+  if ! yosys -q -l "$work/$top.log" -p "$read_cmd; hierarchy -check -top $top; proc;
+      select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr; tee -q -o $work/$top.mem stat;
+      synth -top $top -flatten; check -assert; tee -q -o $work/$top.full stat;
+      design -reset; $read_cmd; synth -top $top -flatten -run begin:fine; opt -full;
+      techmap; opt -fast; abc; opt_clean;
+      tee -q -o $work/$top.logic stat"; then
+    echo "synth: $top FAILED (latch or check error), log:"
+    tail -20 "$work/$top.log"
+    status=1
+    continue
+  fi
+  flops=$(grep -E '\$_(S?DFF|DFFE|SDFFE|SDFFCE|ALDFF|DFFSR)' "$work/$top.full" | awk '{n+=$2} END {print n+0}')
+  mem_bits=$(awk '/Number of memory bits:/ {n=$5} END {print n+0}' "$work/$top.mem")
+  printf "%-28s %10s %10s %10s %12s\n" "$top" "$(count "$work/$top.full")" "$flops" \
+    "$(count "$work/$top.logic")" "$mem_bits"
+done < "$rtl/manifest.txt"
+exit $status

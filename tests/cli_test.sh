@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# texsim from the user's side: help on every command, clear errors with a non-zero exit for
+# bad files and arguments, and no output file left behind (or clobbered) by a failed run.
+# Usage: tests/cli_test.sh PATH/TO/texsim
+set -uo pipefail
+texsim=$(realpath "$1")
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+
+pass() { echo "ok   $1"; }
+fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+
+# expect NAME EXIT_CODE PATTERN -- command...: the exit code and a pattern in stdout+stderr.
+expect() {
+  local name=$1 code=$2 pattern=$3
+  shift 4
+  local out
+  out=$("$@" 2>&1)
+  local got=$?
+  if [[ $got -ne $code ]]; then
+    fail "$name: exit $got, expected $code"; echo "$out" | head -20; return
+  fi
+  if ! grep -qE -- "$pattern" <<<"$out"; then
+    fail "$name: output lacks /$pattern/"; echo "$out" | head -20; return
+  fi
+  pass "$name"
+}
+
+for cmd in "" "cosim" "ccc" "ccc encode" "ccc decode" "ccc roundtrip" "formats" "pattern"; do
+  # shellcheck disable=SC2086
+  expect "help: texsim $cmd" 0 "Usage" -- "$texsim" $cmd --help
+done
+
+"$texsim" pattern default img.png --width 37 --height 21 >/dev/null
+expect "encode an odd-sized image" 0 "PSNR .* dB.*bits per texel" -- "$texsim" ccc encode img.png img.ccc
+expect "decode through rtl, checked against golden" 0 "MATCH: golden = rtl, all 777 texels" -- \
+  "$texsim" ccc decode img.ccc dec.png --engine rtl --check golden
+expect "decode through hls" 0 "wrote dec_hls.png" -- "$texsim" ccc decode img.ccc dec_hls.png --engine hls
+cmp -s <("$texsim" formats --sv-package) "$root/rtl/tmu_pkg.sv" && pass "formats --sv-package = rtl/tmu_pkg.sv" \
+  || fail "formats --sv-package differs from rtl/tmu_pkg.sv"
+
+# Bad input: a message naming the file and field, non-zero exit, nothing written.
+expect "missing .ccc" 2 "nope.ccc" -- "$texsim" ccc decode nope.ccc x.png
+printf 'CCC1\x04\x00\x00\x00' >short.ccc
+expect "truncated .ccc names the header" 2 "short.ccc: header:" -- "$texsim" ccc decode short.ccc short.png
+[[ ! -e short.png ]] && pass "no output after a failed decode" || fail "short.png written by a failed decode"
+head -c 100 img.ccc >trunc.ccc
+head -c 20000 /dev/zero >>trunc.ccc
+cp img.ccc bad_magic.ccc
+printf 'XXXX' | dd of=bad_magic.ccc bs=1 conv=notrunc 2>/dev/null
+expect "wrong magic names the field" 2 "bad_magic.ccc: magic: not a CCC1 file" -- "$texsim" ccc decode bad_magic.ccc m.png
+expect "wrong size names the blocks" 2 "trunc.ccc: blocks:" -- "$texsim" ccc decode trunc.ccc t.png
+echo "not an image" >fake.png
+expect "corrupt image names the file" 2 "fake.png" -- "$texsim" ccc encode fake.png fake.ccc
+[[ ! -e fake.ccc ]] && pass "no .ccc after a failed encode" || fail "fake.ccc written by a failed encode"
+echo keep >keep.png
+"$texsim" ccc decode bad_magic.ccc keep.png >/dev/null 2>&1
+[[ $(cat keep.png) == keep ]] && pass "existing output untouched by a failed run" || fail "keep.png clobbered"
+expect "unwritable output directory" 2 "no_such_dir/x.ccc" -- "$texsim" ccc encode img.png no_such_dir/x.ccc
+expect "unknown block lists the blocks" 2 "unknown block 'nope' \(blocks: ccc" -- "$texsim" cosim nope
+expect "bad engine" 2 "engine" -- "$texsim" ccc decode img.ccc x.png --engine fast
+expect "out-of-range stall probability" 2 "in-idle" -- "$texsim" cosim ccc --in-idle 2
+
+# Co-simulation verdicts and exit codes.
+expect "cosim ccc matches" 0 "MATCH: all .* transactions bit-exact, golden = hls = rtl" -- \
+  "$texsim" cosim ccc --count 3000 --seed 5
+expect "cosim with an injected fault fails" 1 "reproduce: texsim cosim ccc --seed 5" -- \
+  "$texsim" cosim ccc --count 3000 --seed 5 --inject-fault 100 --wave-dir waves
+[[ -s waves/ccc_mismatch.fst && -s waves/ccc_mismatch.gtkw ]] && pass "mismatch waveform written" \
+  || fail "no mismatch waveform"
+"$texsim" cosim ccc --count 500 --seed 8 --save-vectors vec.csv >/dev/null
+expect "replay a saved vector file" 0 "MATCH" -- "$texsim" cosim ccc --vectors vec.csv
+printf 'op,block\n0,0x1ffffffff\n' >bad.csv
+expect "bad vector file names line and field" 2 "bad.csv: line 2: block" -- "$texsim" cosim ccc --vectors bad.csv
+
+echo "$failures failure(s)"
+exit $((failures > 0))
