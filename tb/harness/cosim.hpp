@@ -28,7 +28,7 @@ struct CosimOptions {
   double out_stall = 0.25;            // probability of output ready low in a cycle
   bool x_check = true;                // rtl twice, different random initial values
   std::string wave_dir = "cosim_out";
-  uint64_t wave_before = 200, wave_after = 20;  // cycles around the mismatch
+  uint64_t wave_before = 64, wave_after = 16;  // cycles around the mismatch
   int64_t inject_fault = -1;          // flip bit 0 of this output of every engine (teeth check)
 };
 

@@ -39,6 +39,10 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
                 "Skip the second rtl run with other random initial values");
   cmd->add_option("--wave-dir", args->cosim.wave_dir, "Where a mismatch waveform (FST + GTKWave file) goes")
       ->capture_default_str();
+  cmd->add_option("--wave-before", args->cosim.wave_before, "Cycles of waveform before the mismatch")
+      ->capture_default_str();
+  cmd->add_option("--wave-after", args->cosim.wave_after, "Cycles of waveform after the mismatch")
+      ->capture_default_str();
   cmd->add_option("--inject-fault", args->cosim.inject_fault,
                   "Flip one bit of output N of every engine, to see the scoreboard catch it");
   cmd->add_option("--texture", args->block_options.texture, "ccc-bilinear: texture (.ccc) instead of a random one")
