@@ -47,6 +47,8 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
                   "Flip one bit of output N of every engine, to see the scoreboard catch it");
   cmd->add_option("--texture", args->block_options.texture, "ccc-bilinear: texture (.ccc) instead of a random one")
       ->check(CLI::ExistingFile);
+  cmd->add_flag("--no-lookahead", [args](int64_t) { args->block_options.lookahead = false; },
+                "ccc-bilinear: disable the neighbour prefetch");
   cmd->callback([args, &exit_code] {
     args->cosim.engines.clear();
     std::stringstream ss(args->engines);
