@@ -1,5 +1,6 @@
 // CCC decoder: golden vs hls vs rtl, bit for bit, and proof that the comparison has teeth.
 #include <Vtmu_ccc_decoder_mutant.h>
+#include <Vtmu_ccc_decoder_mutant_stall.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -79,6 +80,21 @@ TEST(CccDecoderCosimTest, MutantRtlIsCaughtWithAWaveform) {
   ASSERT_FALSE(r.wave_path.empty());
   EXPECT_GT(std::filesystem::file_size(r.wave_path), 0u);
   EXPECT_TRUE(std::filesystem::exists(r.wave_path.substr(0, r.wave_path.size() - 4) + ".gtkw"));
+}
+
+// An RTL assertion that fires fails the run (with the cycle) instead of aborting the process.
+TEST(CccDecoderCosimTest, FiredAssertionFailsTheRun) {
+  const CccDecoderBlock block(4);
+  CosimOptions o = options(4, 2000, {"rtl"});
+  o.out_stall = 0.5;
+  std::stringstream log;
+  const CosimResult r = run_cosim(block, o, log, [](const std::string& level) -> std::unique_ptr<Engine> {
+    if (level == "rtl") return make_ccc_decoder_rtl_engine<Vtmu_ccc_decoder_mutant_stall>("rtl");
+    return nullptr;
+  });
+  EXPECT_FALSE(r.pass);
+  EXPECT_NE(r.runs.at("rtl").error.find("RTL assertion failed at cycle"), std::string::npos)
+      << log.str();
 }
 
 }  // namespace

@@ -2,16 +2,20 @@
 
 #include <stdexcept>
 
+#include "blocks/ccc_bilinear_block.hpp"
 #include "blocks/ccc_decoder_block.hpp"
 
 namespace tmu::tb {
 
 std::vector<BlockInfo> block_list() {
-  return {{"ccc", "CCC decoder (000 §3, Fig. 5): block word + texel address -> RGB888"}};
+  return {{"ccc", "CCC decoder (000 §3, Fig. 5): block word + texel address -> RGB888"},
+          {"ccc-bilinear",
+           "CCC low-cost unit (000 §4, Figs. 6-7): 4-entry block cache with lookahead + bilinear"}};
 }
 
 std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& options) {
   if (name == "ccc") return std::make_unique<CccDecoderBlock>(options.seed);
+  if (name == "ccc-bilinear") return std::make_unique<CccBilinearBlock>(options);
   std::string known;
   for (const BlockInfo& b : block_list()) known += (known.empty() ? "" : ", ") + b.name;
   throw std::invalid_argument("unknown block '" + name + "' (blocks: " + known + ")");

@@ -43,7 +43,9 @@ std::vector<Txn> build_stimulus(const Block& block, const CosimOptions& options)
     for (const Txn& t : block.directed_items()) items.push_back(t);
   }
   std::mt19937_64 rng(options.seed);
-  for (const Txn& t : block.random_items(rng, options.count)) items.push_back(block.inputs().masked(t));
+  for (const Txn& t : block.random_items(rng, options.count)) items.push_back(t);
+  // Every field as its port carries it: generators may produce wider (e.g. negative) values.
+  for (Txn& t : items) t = block.inputs().masked(t);
   return items;
 }
 

@@ -28,6 +28,8 @@ class ScAdapter {
   virtual Txn out() const = 0;
   virtual void env_drive() {}
   virtual void env_sample() {}
+  // A protocol or address error the environment saw; non-empty fails the run.
+  virtual std::string env_error() const { return {}; }
   virtual Counters counters() const { return {}; }
 };
 
@@ -82,6 +84,9 @@ class ScDriver : public sc_core::sc_module {
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.cycles = driver_.cycle();
     result.counters = adapter_.counters();
+    if (const std::string env = adapter_.env_error(); !env.empty()) {
+      result.error += (result.error.empty() ? "" : "; ") + env;
+    }
     sc_core::sc_stop();
   }
 

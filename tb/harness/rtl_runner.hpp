@@ -10,6 +10,8 @@
 
 #include <chrono>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "harness/engine.hpp"
@@ -32,6 +34,8 @@ class RtlAdapter {
   // requests before the edge.
   virtual void env_drive(Model&) {}
   virtual void env_sample(const Model&) {}
+  // A protocol or address error the environment saw; non-empty fails the run.
+  virtual std::string env_error() const { return {}; }
   virtual Counters counters(const Model&) const { return {}; }
 };
 
@@ -39,6 +43,11 @@ inline constexpr int kResetCycles = 5;
 inline constexpr uint64_t kTimePerCycle = 10;  // waveform time units (ns) per clock
 
 // Verilator rejects seed 0; map any 64-bit seed onto 1..2^31-1.
+// Adds `error` to the run's error message (runs can fail in more than one way).
+inline void append_error(RunResult& result, const std::string& error) {
+  if (!error.empty()) result.error += (result.error.empty() ? "" : "; ") + error;
+}
+
 inline int verilator_seed(uint64_t seed) { return static_cast<int>(1 + seed % 0x7FFFFFFEull); }
 
 template <class Model>
@@ -47,6 +56,7 @@ RunResult run_rtl(RtlAdapter<Model>& adapter, const std::vector<Txn>& items, siz
   auto ctx = std::make_unique<VerilatedContext>();
   ctx->randReset(2);  // every flop and memory starts random: reset bugs show up as X leaks
   ctx->randSeed(verilator_seed(options.x_seed));
+  ctx->fatalOnError(false);  // a failed assertion fails this run, not the whole process
   const TraceOptions* trace = options.trace ? &*options.trace : nullptr;
   if (trace) ctx->traceEverOn(true);
   auto m = std::make_unique<Model>(ctx.get(), "TOP");
@@ -69,8 +79,14 @@ RunResult run_rtl(RtlAdapter<Model>& adapter, const std::vector<Txn>& items, siz
   };
   auto tick = [&] {
     dump(wave_cycle * kTimePerCycle);
+    ctx->time(wave_cycle * kTimePerCycle + kTimePerCycle / 2);  // assertion messages show it
     m->clk_i = 1;
     m->eval();
+    if (ctx->gotError()) {
+      throw std::runtime_error("RTL assertion failed at cycle " +
+                               std::to_string(static_cast<int64_t>(wave_cycle) - kResetCycles) +
+                               " (Verilator's %Error line above names it)");
+    }
     dump(wave_cycle * kTimePerCycle + kTimePerCycle / 2);
     m->clk_i = 0;
     ++wave_cycle;
@@ -111,6 +127,7 @@ RunResult run_rtl(RtlAdapter<Model>& adapter, const std::vector<Txn>& items, siz
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.cycles = driver.cycle();
   result.counters = adapter.counters(*m);
+  append_error(result, adapter.env_error());
   if (fst && fst->isOpen()) fst->close();
   m->final();
   return std::move(result);
