@@ -120,22 +120,6 @@ TEST(CccBilinearCosimTest, OneRequestPerClockOnHits) {
 
 // --- whole images -------------------------------------------------------------------------
 
-// Every pixel of `tex` resampled to out_w x out_h (pixel centres mapped onto texel space),
-// in raster order: what a rasterizer sends for a screen-aligned textured rectangle.
-std::vector<Txn> resample_items(const ccc::Texture& tex, uint32_t out_w, uint32_t out_h) {
-  std::vector<Txn> items = bilinear_clut_load(tex);
-  auto coord = [](uint32_t i, uint32_t size, uint32_t out) {  // round((i + 0.5) * size / out * 256)
-    return static_cast<int32_t>(((2 * int64_t{i} + 1) * size * 256 + out) / (2 * int64_t{out}));
-  };
-  for (uint32_t y = 0; y < out_h; ++y) {
-    for (uint32_t x = 0; x < out_w; ++x) {
-      items.push_back(
-          bilinear_sample_item(coord(x, tex.width, out_w), coord(y, tex.height, out_h)));
-    }
-  }
-  return items;
-}
-
 TEST(CccBilinearCosimTest, WholeImagesMagnifiedAndMinified) {
   // An encoded photo-like texture whose sides are not multiples of 4.
   const ccc::Texture tex = ccc::encode(patterns::smooth_field(157, 113, 5));
@@ -146,7 +130,7 @@ TEST(CccBilinearCosimTest, WholeImagesMagnifiedAndMinified) {
     uint32_t out_w, out_h;
   };
   for (const Case& c : {Case{"2x magnification", 314, 226}, Case{"0.37x minification", 58, 42}}) {
-    const std::vector<Txn> items = resample_items(tex, c.out_w, c.out_h);
+    const std::vector<Txn> items = bilinear_resample_items(tex, c.out_w, c.out_h);
     const fs::path file = temp_dir() / (std::string(c.name).substr(0, 4) + ".csv");
     write_vectors(file.string(),
                   CccBilinearBlock(block_options(1, true, tex_path.string())).inputs(), items);

@@ -63,6 +63,9 @@ Txn bilinear_sample_item(int32_t u_raw, int32_t v_raw);
 Txn bilinear_clut_item(uint8_t index, uint32_t rgb);
 // The 256 CLUT writes that load a texture's colours.
 std::vector<Txn> bilinear_clut_load(const ccc::Texture& tex);
+// The CLUT load, then every pixel of `tex` resampled to out_w x out_h in raster order, pixel
+// centres mapped onto texel space: what a rasterizer sends for a screen-aligned rectangle.
+std::vector<Txn> bilinear_resample_items(const ccc::Texture& tex, uint32_t out_w, uint32_t out_h);
 // The raw SQ16.8 coordinate of a sample item's field (sign-extended).
 int32_t bilinear_coord(uint64_t field);
 
