@@ -3,6 +3,7 @@
 # problem `check -assert` finds, and prints two cell counts per block (generic gates):
 #   cells      every memory mapped to flip-flops (what an FPGA without RAM blocks would get)
 #   logic      memories kept as RAM macros ($mem cells), the logic around them only
+# and, for a block with submodules, the cells of each submodule (memories as flops).
 # Usage: scripts/synth.sh [TOP...]   (default: every block)
 set -euo pipefail
 rtl=$(cd "$(dirname "${BASH_SOURCE[0]}")/../rtl" && pwd)
@@ -35,5 +36,10 @@ while read -r top sources; do
   mem_bits=$(awk '/Number of memory bits:/ {n=$5} END {print n+0}' "$work/$top.mem")
   printf "%-28s %10s %10s %10s %12s\n" "$top" "$(count "$work/$top.full")" "$flops" \
     "$(count "$work/$top.logic")" "$mem_bits"
+  if [[ $(wc -w <<<"$sources") -gt 1 ]]; then  # per submodule, from a hierarchical synthesis
+    yosys -q -p "$read_cmd; synth -top $top; tee -q -o $work/$top.hier stat"
+    awk -v top="$top" '/^=== / {m=$2} /Number of cells:/ && m != "" && m != top && m != "design" && !seen[m]++ {
+      printf "  %-26s %10s\n", m, $4}' "$work/$top.hier"
+  fi
 done < "$rtl/manifest.txt"
 exit $status

@@ -24,15 +24,17 @@ Footprint footprint(int32_t u_raw, int32_t v_raw, uint32_t width, uint32_t heigh
   const int64_t half = int64_t{1} << (kFrac - 1);
   const int64_t su = int64_t{u_raw} - half;  // u - 0.5
   const int64_t sv = int64_t{v_raw} - half;
-  const int64_t x0 = su >> kFrac;  // floor
-  const int64_t y0 = sv >> kFrac;
+  const int64_t x0 = fx::shift_right_round(su, kFrac, fx::Round::kFloor);
+  const int64_t y0 = fx::shift_right_round(sv, kFrac, fx::Round::kFloor);
   Footprint fp;
   fp.x0 = static_cast<uint32_t>(clamp_texel(x0, width));
   fp.x1 = static_cast<uint32_t>(clamp_texel(x0 + 1, width));
   fp.y0 = static_cast<uint32_t>(clamp_texel(y0, height));
   fp.y1 = static_cast<uint32_t>(clamp_texel(y0 + 1, height));
-  fp.fx = static_cast<uint32_t>(su & 0xFF);
-  fp.fy = static_cast<uint32_t>(sv & 0xFF);
+  // The weights are the dropped fraction bits: exactly the UQ0.8 filter weight format.
+  static_assert(formats::kFilterWeight.frac_bits == kFrac);
+  fp.fx = static_cast<uint32_t>(su - (x0 << kFrac));
+  fp.fy = static_cast<uint32_t>(sv - (y0 << kFrac));
   return fp;
 }
 
@@ -52,8 +54,10 @@ BlockList footprint_blocks(const Footprint& fp) {
 }
 
 BlockList lookahead_blocks(int32_t u_raw, int32_t v_raw, uint32_t width, uint32_t height) {
-  const auto tx = static_cast<uint32_t>(clamp_texel(int64_t{u_raw} >> kFrac, width));
-  const auto ty = static_cast<uint32_t>(clamp_texel(int64_t{v_raw} >> kFrac, height));
+  const int64_t tu = fx::shift_right_round(u_raw, kFrac, fx::Round::kFloor);
+  const int64_t tv = fx::shift_right_round(v_raw, kFrac, fx::Round::kFloor);
+  const auto tx = static_cast<uint32_t>(clamp_texel(tu, width));
+  const auto ty = static_cast<uint32_t>(clamp_texel(tv, height));
   const int64_t bx = tx / 4, by = ty / 4;
   const int64_t nx = bx + ((tx & 2u) ? 1 : -1);
   const int64_t ny = by + ((ty & 2u) ? 1 : -1);

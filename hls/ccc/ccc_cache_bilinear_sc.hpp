@@ -30,7 +30,7 @@ SC_MODULE(CccCacheBilinearSc) {
   using uint_t = sc_dt::sc_uint<W>;
   template <int W>
   using int_t = sc_dt::sc_int<W>;
-  static constexpr int kStatWidth = 32;
+  static constexpr int kStatWidth = fmts::kStatCount.width();
 
   sc_core::sc_in<bool> clk_i{"clk_i"};
   sc_core::sc_in<bool> rst_ni{"rst_ni"};

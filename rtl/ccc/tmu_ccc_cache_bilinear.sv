@@ -88,9 +88,9 @@ module tmu_ccc_cache_bilinear (
   output tmu_pkg::rgb888_t         out_rgb_o,
 
   /// Statistics since reset: footprint blocks found, fetched, and lookahead blocks fetched.
-  output logic [31:0]              stat_hits_o,
-  output logic [31:0]              stat_misses_o,
-  output logic [31:0]              stat_prefetches_o
+  output tmu_pkg::stat_count_t     stat_hits_o,
+  output tmu_pkg::stat_count_t     stat_misses_o,
+  output tmu_pkg::stat_count_t     stat_prefetches_o
 );
 
   localparam int unsigned TexelW   = 12;  // texel coordinate 0..4095 (MaxTexSize)
@@ -104,7 +104,7 @@ module tmu_ccc_cache_bilinear (
   localparam int unsigned NumAhead = 3;   // lookahead: horizontal, vertical, diagonal
   localparam int unsigned NumCand  = NumFp + NumAhead;
   localparam int unsigned CandW    = $clog2(NumCand);
-  localparam int unsigned StatW    = 32;
+  localparam int unsigned StatW    = tmu_pkg::StatCountW;
   localparam int unsigned RgbW     = tmu_pkg::Rgb888W;
   localparam int unsigned ChW      = tmu_pkg::ChannelW;
 
