@@ -60,7 +60,8 @@ void BM_CccDecodeGoldenFunction(benchmark::State& state) {
   for (size_t i = 0; i < clut.size(); ++i) clut[i] = unpack_rgb(static_cast<uint32_t>(rng()));
   for (auto _ : state) {
     uint32_t acc = 0;
-    for (size_t i = 0; i < texels; ++i) acc ^= ccc::decode_texel(words[i], static_cast<unsigned>(i), clut);
+    for (size_t i = 0; i < texels; ++i)
+      acc ^= ccc::decode_texel(words[i], static_cast<unsigned>(i), clut);
     benchmark::DoNotOptimize(acc);
   }
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * static_cast<int64_t>(texels));

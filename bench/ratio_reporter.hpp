@@ -32,7 +32,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
     fmt::print("\n{:<46} {:>12} {:>40} {:>8}\n", "benchmark", "items/s", "peer", "ratio");
     for (const auto& [name, peer] : pairs_) {
       if (!rate_.count(name) || !rate_.count(peer)) continue;
-      fmt::print("{:<46} {:>12.4g} {:>40} {:>8.4f}\n", name, rate_[name], peer, rate_[name] / rate_[peer]);
+      fmt::print("{:<46} {:>12.4g} {:>40} {:>8.4f}\n", name, rate_[name], peer,
+                 rate_[name] / rate_[peer]);
     }
   }
 

@@ -5,7 +5,6 @@
 #include <Vtmu_ccc_cache_bilinear_mutant_count.h>
 #include <Vtmu_ccc_cache_bilinear_mutant_round.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <iostream>
@@ -16,27 +15,15 @@
 #include "common/test_patterns.hpp"
 #include "harness/cosim.hpp"
 #include "harness/vector_file.hpp"
+#include "tests/cosim_test_support.hpp"
 
 namespace tmu::tb {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_dir() {
-  const fs::path dir =
-      fs::temp_directory_path() / ("tmu_ccc_bilinear_cosim_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
-
-CosimOptions options(uint64_t seed, size_t count, std::vector<std::string> engines) {
-  CosimOptions o;
-  o.seed = seed;
-  o.count = count;
-  o.engines = std::move(engines);
-  o.wave_dir = (temp_dir() / "waves").string();
-  return o;
-}
+fs::path temp_dir() { return testing::temp_dir("tmu_ccc_bilinear_cosim_test"); }
+constexpr auto options = testing::cosim_options;
 
 BlockOptions block_options(uint64_t seed, bool lookahead, std::string texture = "") {
   BlockOptions b;
@@ -47,11 +34,9 @@ BlockOptions block_options(uint64_t seed, bool lookahead, std::string texture = 
 }
 
 uint64_t counter(const RunResult& r, const std::string& name) {
-  for (const auto& [n, v] : r.counters) {
-    if (n == name) return v;
-  }
-  ADD_FAILURE() << "no counter " << name;
-  return 0;
+  const auto v = counter_value(r.counters, name);
+  if (!v) ADD_FAILURE() << "no counter " << name;
+  return v.value_or(0);
 }
 
 std::string counters_text(const RunResult& r) {

@@ -8,18 +8,12 @@
 
 #include "blocks/ccc_decoder_block.hpp"
 #include "harness/cosim.hpp"
+#include "tests/cosim_test_support.hpp"
 
 namespace tmu::tb {
 namespace {
 
-CosimOptions options(uint64_t seed, size_t count, std::vector<std::string> engines) {
-  CosimOptions o;
-  o.seed = seed;
-  o.count = count;
-  o.engines = std::move(engines);
-  o.wave_dir = (std::filesystem::temp_directory_path() / "tmu_cosim_test").string();
-  return o;
-}
+constexpr auto options = testing::cosim_options;
 
 TEST(CccDecoderCosimTest, MillionRandomTransactionsGoldenVsRtl) {
   const uint64_t seed = 20261122;
@@ -70,10 +64,11 @@ TEST(CccDecoderCosimTest, MutantRtlIsCaughtWithAWaveform) {
   CosimOptions o = options(9, 2000, {"rtl"});
   std::filesystem::remove_all(o.wave_dir);
   std::stringstream log;
-  const CosimResult r = run_cosim(block, o, log, [](const std::string& level) -> std::unique_ptr<Engine> {
-    if (level == "rtl") return make_ccc_decoder_rtl_engine<Vtmu_ccc_decoder_mutant>("rtl");
-    return nullptr;
-  });
+  const CosimResult r =
+      run_cosim(block, o, log, [](const std::string& level) -> std::unique_ptr<Engine> {
+        if (level == "rtl") return make_ccc_decoder_rtl_engine<Vtmu_ccc_decoder_mutant>("rtl");
+        return nullptr;
+      });
   EXPECT_FALSE(r.pass);
   EXPECT_EQ(r.failing_engine, "rtl");
   EXPECT_NE(log.str().find("reproduce: texsim cosim ccc --seed 9"), std::string::npos) << log.str();
@@ -88,10 +83,12 @@ TEST(CccDecoderCosimTest, FiredAssertionFailsTheRun) {
   CosimOptions o = options(4, 2000, {"rtl"});
   o.out_stall = 0.5;
   std::stringstream log;
-  const CosimResult r = run_cosim(block, o, log, [](const std::string& level) -> std::unique_ptr<Engine> {
-    if (level == "rtl") return make_ccc_decoder_rtl_engine<Vtmu_ccc_decoder_mutant_stall>("rtl");
-    return nullptr;
-  });
+  const CosimResult r =
+      run_cosim(block, o, log, [](const std::string& level) -> std::unique_ptr<Engine> {
+        if (level == "rtl")
+          return make_ccc_decoder_rtl_engine<Vtmu_ccc_decoder_mutant_stall>("rtl");
+        return nullptr;
+      });
   EXPECT_FALSE(r.pass);
   EXPECT_NE(r.runs.at("rtl").error.find("RTL assertion failed at cycle"), std::string::npos)
       << log.str();

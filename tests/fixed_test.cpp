@@ -15,15 +15,18 @@ namespace {
 
 TEST(FixedTest, ShiftRightRoundTiesInEveryMode) {
   // 2.5, -2.5, 3.5, -3.5 in UQ/SQ x.1 (raw = value * 2), shifted by one bit.
-  struct Case { int64_t raw; int64_t floor, zero, half_up, half_even; };
+  struct Case {
+    int64_t raw;
+    int64_t floor, zero, half_up, half_even;
+  };
   const Case cases[] = {
-      {5, 2, 2, 3, 2},      // 2.5
-      {-5, -3, -2, -2, -2}, // -2.5
-      {7, 3, 3, 4, 4},      // 3.5
-      {-7, -4, -3, -3, -4}, // -3.5
-      {4, 2, 2, 2, 2},      // exact
-      {-1, -1, 0, 0, 0},    // -0.5
-      {1, 0, 0, 1, 0},      // 0.5
+      {5, 2, 2, 3, 2},       // 2.5
+      {-5, -3, -2, -2, -2},  // -2.5
+      {7, 3, 3, 4, 4},       // 3.5
+      {-7, -4, -3, -3, -4},  // -3.5
+      {4, 2, 2, 2, 2},       // exact
+      {-1, -1, 0, 0, 0},     // -0.5
+      {1, 0, 0, 1, 0},       // 0.5
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.raw);
@@ -159,7 +162,7 @@ TEST(FixedTest, BilerpHitsTheCornersExactlyAndRoundsHalfUp) {
   EXPECT_EQ(bilerp_u8(10, 20, 30, 40, 0, 0), 10u);
   EXPECT_EQ(bilerp_u8(255, 255, 255, 255, 255, 255), 255u);  // never overflows
   EXPECT_EQ(bilerp_u8(0, 0, 0, 0, 255, 255), 0u);
-  EXPECT_EQ(bilerp_u8(0, 1, 0, 1, 128, 0), 1u);  // exactly 0.5 -> rounds up
+  EXPECT_EQ(bilerp_u8(0, 1, 0, 1, 128, 0), 1u);         // exactly 0.5 -> rounds up
   EXPECT_EQ(bilerp_u8(0, 255, 0, 255, 128, 77), 128u);  // 127.5 -> 128
   // weight 255 leaves 1/256 of the first sample: 255 * 1/256 = 0.996 -> 1
   EXPECT_EQ(bilerp_u8(255, 0, 255, 0, 255, 0), 1u);

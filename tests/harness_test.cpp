@@ -139,7 +139,8 @@ TEST(VectorFileTest, RoundTripsAndAcceptsAnyColumnOrder) {
   const std::string path = temp_file("rt.csv", "");
   write_vectors(path, kIn, items);
   EXPECT_EQ(read_vectors(path, kIn), items);
-  const auto reordered = read_vectors(temp_file("order.csv", "# comment\nrgb,u\n0x10, -128\n"), kIn);
+  const auto reordered =
+      read_vectors(temp_file("order.csv", "# comment\nrgb,u\n0x10, -128\n"), kIn);
   ASSERT_EQ(reordered.size(), 1u);
   EXPECT_EQ(reordered[0].f[1], 0xFFFF80u);  // -0.5 as 24-bit two's complement
   EXPECT_EQ(reordered[0].f[2], 0x10u);
@@ -155,9 +156,9 @@ TEST(VectorFileTest, BadInputNamesTheLineAndField) {
     return std::string("no error");
   };
   EXPECT_EQ(field_of("op,bogus\n"), "line 1: header / unknown field 'bogus' (fields: op, u, rgb)");
-  EXPECT_NE(field_of("op,u\n2,0\n").find("line 2: op"), std::string::npos);        // out of range
+  EXPECT_NE(field_of("op,u\n2,0\n").find("line 2: op"), std::string::npos);         // out of range
   EXPECT_NE(field_of("op,u\n0,0x1000000\n").find("line 2: u"), std::string::npos);  // too wide
-  EXPECT_NE(field_of("op,u\n0\n").find("line 2"), std::string::npos);              // short row
+  EXPECT_NE(field_of("op,u\n0\n").find("line 2"), std::string::npos);               // short row
   EXPECT_NE(field_of("op,u\n0,abc\n").find("not a number"), std::string::npos);
   EXPECT_NE(field_of("").find("header"), std::string::npos);
   EXPECT_THROW(read_vectors("/nonexistent/v.csv", kIn), InputError);

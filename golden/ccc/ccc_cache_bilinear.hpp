@@ -57,7 +57,9 @@ BlockList lookahead_blocks(int32_t u_raw, int32_t v_raw, uint32_t width, uint32_
 constexpr unsigned cache_slot(BlockXY b) { return (b.bx & 1u) + 2u * (b.by & 1u); }
 
 // Memory address (tag) of a block.
-constexpr uint32_t block_address(BlockXY b, uint32_t width) { return b.by * ((width + 3) / 4) + b.bx; }
+constexpr uint32_t block_address(BlockXY b, uint32_t width) {
+  return b.by * ((width + 3) / 4) + b.bx;
+}
 
 struct CacheEntry {
   bool valid = false;
@@ -73,7 +75,8 @@ constexpr uint32_t entry_texel(const CacheEntry& e, uint32_t x, uint32_t y) {
 }
 
 // The bilinear blend of four Rgb888 texels, per channel with fx::bilerp_u8.
-uint32_t bilerp_rgb(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, uint32_t fx, uint32_t fy);
+uint32_t bilerp_rgb(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, uint32_t fx,
+                    uint32_t fy);
 
 struct CacheStats {
   uint64_t hits = 0;        // footprint blocks found in the cache
@@ -89,8 +92,8 @@ class CacheBilinearUnit {
 
   CacheBilinearUnit(uint32_t width, uint32_t height, bool lookahead, FetchFn fetch);
 
-  void write_clut(uint8_t index, uint32_t rgb);      // also invalidates every entry
-  uint32_t sample(int32_t u_raw, int32_t v_raw);     // Rgb888
+  void write_clut(uint8_t index, uint32_t rgb);   // also invalidates every entry
+  uint32_t sample(int32_t u_raw, int32_t v_raw);  // Rgb888
 
   const CacheStats& stats() const { return stats_; }
   const std::array<CacheEntry, 4>& entries() const { return entries_; }

@@ -24,9 +24,9 @@ namespace tmu::ccc {
 using Clut = std::array<Rgb8, 256>;
 
 struct Block {
-  uint8_t a = 0;       // CLUT index of colour a (decision bit 0)
-  uint8_t b = 0;       // CLUT index of colour b (decision bit 1)
-  uint16_t bits = 0;   // decision bit per texel, bit 4*y + x
+  uint8_t a = 0;      // CLUT index of colour a (decision bit 0)
+  uint8_t b = 0;      // CLUT index of colour b (decision bit 1)
+  uint16_t bits = 0;  // decision bit per texel, bit 4*y + x
 
   constexpr uint32_t word() const { return (uint32_t{a} << 24) | (uint32_t{b} << 16) | bits; }
   static constexpr Block from_word(uint32_t w) {
@@ -43,7 +43,9 @@ struct Texture {
 
   uint32_t blocks_wide() const { return (width + 3) / 4; }
   uint32_t blocks_high() const { return (height + 3) / 4; }
-  uint32_t block_word(uint32_t bx, uint32_t by) const { return blocks[size_t{by} * blocks_wide() + bx]; }
+  uint32_t block_word(uint32_t bx, uint32_t by) const {
+    return blocks[size_t{by} * blocks_wide() + bx];
+  }
   friend bool operator==(const Texture&, const Texture&) = default;
 };
 

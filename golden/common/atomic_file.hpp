@@ -10,7 +10,8 @@ namespace tmu {
 
 // Calls write(tmp_path) to produce the file, then renames tmp_path to `path`. On any
 // exception the temporary is removed and `path` is left untouched.
-void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write);
+void write_atomically(const std::string& path,
+                      const std::function<void(const std::string&)>& write);
 
 // Writes `bytes` to `path` atomically; throws InputError naming the path on failure.
 void write_file_atomically(const std::string& path, std::string_view bytes);

@@ -11,7 +11,9 @@ class InputError : public std::runtime_error {
  public:
   InputError(const std::string& file, const std::string& field, const std::string& reason)
       : std::runtime_error(file + ": " + (field.empty() ? "" : field + ": ") + reason),
-        file_(file), field_(field), reason_(reason) {}
+        file_(file),
+        field_(field),
+        reason_(reason) {}
 
   const std::string& file() const { return file_; }
   const std::string& field() const { return field_; }

@@ -39,8 +39,8 @@ void write_image(const std::string& path, const ImageRgb8& image) {
     auto out = OIIO::ImageOutput::create(path);
     if (!out) throw InputError(path, "", "no image writer for this extension");
     OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-    if (!out->open(tmp, spec) ||
-        !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) || !out->close()) {
+    if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) ||
+        !out->close()) {
       throw InputError(path, "", "cannot write image: " + out->geterror());
     }
   });

@@ -19,7 +19,7 @@ constexpr uint32_t bilerp_u8(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t 
                              uint32_t fy) {
   const int64_t top = int64_t{c00} * (kWeightOne - fx) + int64_t{c10} * fx;  // UQ8.8
   const int64_t bot = int64_t{c01} * (kWeightOne - fx) + int64_t{c11} * fx;  // UQ8.8
-  const int64_t sum = top * (kWeightOne - fy) + bot * fy;                     // UQ8.16
+  const int64_t sum = top * (kWeightOne - fy) + bot * fy;                    // UQ8.16
   return static_cast<uint32_t>(shift_right_round(sum, 16, Round::kHalfUp));
 }
 

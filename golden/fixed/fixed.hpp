@@ -17,7 +17,7 @@ namespace tmu::fx {
 
 struct Format {
   bool is_signed;
-  int int_bits;   // includes the sign bit when is_signed
+  int int_bits;  // includes the sign bit when is_signed
   int frac_bits;
 
   constexpr int width() const { return int_bits + frac_bits; }
@@ -58,13 +58,16 @@ constexpr int64_t shift_right_round(int64_t v, int shift, Round round) {
   if (shift <= 0) return v;
   if (shift > 62) shift = 62;
   const int64_t one = int64_t{1} << shift;
-  const int64_t floor_q = v >> shift;  // arithmetic shift: floor division
+  const int64_t floor_q = v >> shift;     // arithmetic shift: floor division
   const int64_t rem = v - floor_q * one;  // 0 <= rem < one
   const int64_t half = one >> 1;
   switch (round) {
-    case Round::kFloor: return floor_q;
-    case Round::kTowardZero: return (v < 0 && rem != 0) ? floor_q + 1 : floor_q;
-    case Round::kHalfUp: return rem >= half ? floor_q + 1 : floor_q;
+    case Round::kFloor:
+      return floor_q;
+    case Round::kTowardZero:
+      return (v < 0 && rem != 0) ? floor_q + 1 : floor_q;
+    case Round::kHalfUp:
+      return rem >= half ? floor_q + 1 : floor_q;
     case Round::kHalfEven:
       if (rem > half) return floor_q + 1;
       if (rem < half) return floor_q;
@@ -77,14 +80,16 @@ constexpr int64_t shift_right_round(int64_t v, int shift, Round round) {
 inline int64_t fit(int64_t raw, const Format& f, Overflow overflow) {
   if (f.holds(raw)) return raw;
   switch (overflow) {
-    case Overflow::kSaturate: return raw < f.min_raw() ? f.min_raw() : f.max_raw();
+    case Overflow::kSaturate:
+      return raw < f.min_raw() ? f.min_raw() : f.max_raw();
     case Overflow::kWrap: {
       const uint64_t mask = (uint64_t{1} << f.width()) - 1;
       uint64_t low = static_cast<uint64_t>(raw) & mask;
       if (f.is_signed && (low >> (f.width() - 1)) != 0) low |= ~mask;  // sign-extend
       return static_cast<int64_t>(low);
     }
-    case Overflow::kTrap: break;
+    case Overflow::kTrap:
+      break;
   }
   throw std::logic_error("fixed-point overflow: " + std::to_string(raw) + " does not fit " +
                          to_string(f));
@@ -94,7 +99,8 @@ inline int64_t fit(int64_t raw, const Format& f, Overflow overflow) {
 inline int64_t convert_raw(int64_t raw, const Format& from, const Format& to, Round round,
                            Overflow overflow) {
   const int shift = from.frac_bits - to.frac_bits;
-  const int64_t scaled = shift >= 0 ? shift_right_round(raw, shift, round) : raw * (int64_t{1} << -shift);
+  const int64_t scaled =
+      shift >= 0 ? shift_right_round(raw, shift, round) : raw * (int64_t{1} << -shift);
   return fit(scaled, to, overflow);
 }
 
@@ -124,9 +130,15 @@ class Fixed {
     const double scaled = std::ldexp(v, F.frac_bits);
     double q = 0.0;
     switch (round) {
-      case Round::kFloor: q = std::floor(scaled); break;
-      case Round::kTowardZero: q = std::trunc(scaled); break;
-      case Round::kHalfUp: q = std::floor(scaled + 0.5); break;
+      case Round::kFloor:
+        q = std::floor(scaled);
+        break;
+      case Round::kTowardZero:
+        q = std::trunc(scaled);
+        break;
+      case Round::kHalfUp:
+        q = std::floor(scaled + 0.5);
+        break;
       case Round::kHalfEven: {
         q = std::floor(scaled);
         const double rem = scaled - q;
@@ -150,7 +162,8 @@ class Fixed {
   }
   // Inverse of bits(): interpret the low F.width() bits.
   static Fixed from_bits(uint64_t b) {
-    return from_raw(fit(static_cast<int64_t>(b & ((uint64_t{1} << F.width()) - 1)), F, Overflow::kWrap));
+    return from_raw(
+        fit(static_cast<int64_t>(b & ((uint64_t{1} << F.width()) - 1)), F, Overflow::kWrap));
   }
 
   friend constexpr bool operator==(Fixed a, Fixed b) { return a.raw_ == b.raw_; }
@@ -177,7 +190,9 @@ constexpr Format product_format(Format a, Format b) {
 }
 
 namespace detail {
-inline int64_t align(int64_t raw, int from_frac, int to_frac) { return raw * (int64_t{1} << (to_frac - from_frac)); }
+inline int64_t align(int64_t raw, int from_frac, int to_frac) {
+  return raw * (int64_t{1} << (to_frac - from_frac));
+}
 }  // namespace detail
 
 // Exact sum; result format sum_format(A, B).

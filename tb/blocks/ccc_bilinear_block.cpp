@@ -250,12 +250,14 @@ std::vector<Txn> bilinear_clut_load(const ccc::Texture& tex) {
 
 std::vector<Txn> bilinear_resample_items(const ccc::Texture& tex, uint32_t out_w, uint32_t out_h) {
   std::vector<Txn> items = bilinear_clut_load(tex);
-  auto coord = [](uint32_t i, uint32_t size, uint32_t out) {  // round((i + 0.5) * size / out), SQ16.8
+  auto coord = [](uint32_t i, uint32_t size,
+                  uint32_t out) {  // round((i + 0.5) * size / out), SQ16.8
     return static_cast<int32_t>(((2 * int64_t{i} + 1) * size * kOne + out) / (2 * int64_t{out}));
   };
   for (uint32_t y = 0; y < out_h; ++y) {
     for (uint32_t x = 0; x < out_w; ++x) {
-      items.push_back(bilinear_sample_item(coord(x, tex.width, out_w), coord(y, tex.height, out_h)));
+      items.push_back(
+          bilinear_sample_item(coord(x, tex.width, out_w), coord(y, tex.height, out_h)));
     }
   }
   return items;

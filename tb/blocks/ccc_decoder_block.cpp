@@ -139,7 +139,8 @@ ImageRgb8 decode_with_engine(const ccc::Texture& tex, Engine& engine, RunResult*
   std::vector<Txn> items;
   items.reserve(fmts::kClutEntries + size_t{tex.width} * tex.height);
   for (int i = 0; i < fmts::kClutEntries; ++i) {
-    items.push_back(clut_write_item(static_cast<uint8_t>(i), pack_rgb(tex.clut[static_cast<size_t>(i)])));
+    items.push_back(
+        clut_write_item(static_cast<uint8_t>(i), pack_rgb(tex.clut[static_cast<size_t>(i)])));
   }
   for (uint32_t y = 0; y < tex.height; ++y) {
     for (uint32_t x = 0; x < tex.width; ++x) {
@@ -149,8 +150,10 @@ ImageRgb8 decode_with_engine(const ccc::Texture& tex, Engine& engine, RunResult*
   RunResult r = engine.run(items, RunOptions{});
   if (!r.error.empty()) throw std::runtime_error(engine.name() + " decoder run failed: " + r.error);
   ImageRgb8 img(static_cast<int>(tex.width), static_cast<int>(tex.height));
-  if (r.outputs.size() != img.pixels.size()) throw std::runtime_error(engine.name() + ": wrong output count");
-  for (size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = unpack_rgb(static_cast<uint32_t>(r.outputs[i].f[0]));
+  if (r.outputs.size() != img.pixels.size())
+    throw std::runtime_error(engine.name() + ": wrong output count");
+  for (size_t i = 0; i < img.pixels.size(); ++i)
+    img.pixels[i] = unpack_rgb(static_cast<uint32_t>(r.outputs[i].f[0]));
   if (run) *run = std::move(r);
   return img;
 }
@@ -198,7 +201,8 @@ std::vector<Txn> CccDecoderBlock::random_items(std::mt19937_64& rng, size_t coun
   for (size_t i = 0; i < count; ++i) {
     const uint64_t r = rng();
     if ((r & 63) == 0) {  // one item in 64 rewrites a CLUT entry
-      items.push_back(clut_write_item(static_cast<uint8_t>(r >> 8), static_cast<uint32_t>(r >> 16)));
+      items.push_back(
+          clut_write_item(static_cast<uint8_t>(r >> 8), static_cast<uint32_t>(r >> 16)));
     } else {
       items.push_back(decode_item(static_cast<uint32_t>(r >> 32), static_cast<unsigned>(r >> 8)));
     }
@@ -214,9 +218,15 @@ std::unique_ptr<Engine> CccDecoderBlock::engine(const std::string& level) const 
 }
 
 std::vector<std::string> CccDecoderBlock::coverage_cases() const {
-  return {"decision bit 0 (colour a)", "decision bit 1 (colour b)", "index a == index b",
-          "CLUT index 0",              "CLUT index 255",            "texel 0 (first)",
-          "texel 15 (last)",           "decode right after a CLUT write", "read of an entry just rewritten"};
+  return {"decision bit 0 (colour a)",
+          "decision bit 1 (colour b)",
+          "index a == index b",
+          "CLUT index 0",
+          "CLUT index 255",
+          "texel 0 (first)",
+          "texel 15 (last)",
+          "decode right after a CLUT write",
+          "read of an entry just rewritten"};
 }
 
 void CccDecoderBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&,

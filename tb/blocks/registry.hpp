@@ -11,8 +11,8 @@ namespace tmu::tb {
 
 struct BlockOptions {
   uint64_t seed = 1;
-  std::string texture;     // ccc-bilinear: a .ccc file instead of a random texture
-  bool lookahead = true;   // ccc-bilinear: neighbour prefetch
+  std::string texture;    // ccc-bilinear: a .ccc file instead of a random texture
+  bool lookahead = true;  // ccc-bilinear: neighbour prefetch
 };
 
 struct BlockInfo {

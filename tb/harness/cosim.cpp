@@ -19,7 +19,8 @@ constexpr uint64_t kStallSeedSalt = 0x5A17'0000'0000'0001ull;
 constexpr uint64_t kXSeeds[2] = {11, 22};
 
 std::string repro_command(const Block& block, const CosimOptions& o) {
-  std::string cmd = fmt::format("texsim cosim {} --seed {} --count {}", block.name(), o.seed, o.count);
+  std::string cmd =
+      fmt::format("texsim cosim {} --seed {} --count {}", block.name(), o.seed, o.count);
   if (!o.vectors_in.empty()) cmd += " --vectors " + o.vectors_in;
   if (!o.directed) cmd += " --no-directed";
   cmd += fmt::format(" --in-idle {} --out-stall {}", o.in_idle, o.out_stall);
@@ -66,7 +67,8 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
     return e ? std::move(e) : block.engine(level);
   };
 
-  fmt::print(log, "cosim {}: seed {}, {} items -> {} transactions; stalls: in-idle {}, out-stall {}\n",
+  fmt::print(log,
+             "cosim {}: seed {}, {} items -> {} transactions; stalls: in-idle {}, out-stall {}\n",
              block.name(), o.seed, items.size(), item_of_output.size(), o.in_idle, o.out_stall);
 
   RunOptions run_opt;
@@ -103,8 +105,10 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
     uint64_t fail_cycle = run.cycles;
     if (c.first) {
       const Mismatch& m = *c.first;
-      const size_t item = m.output_index < item_of_output.size() ? item_of_output[m.output_index] : 0;
-      if (m.got && m.output_index < run.output_cycles.size()) fail_cycle = run.output_cycles[m.output_index];
+      const size_t item =
+          m.output_index < item_of_output.size() ? item_of_output[m.output_index] : 0;
+      if (m.got && m.output_index < run.output_cycles.size())
+        fail_cycle = run.output_cycles[m.output_index];
       fmt::print(log, "  first at transaction {} (input item {}{})\n", m.output_index, item,
                  level == "golden" ? "" : fmt::format(", {} cycle {}", level, fail_cycle));
       fmt::print(log, "  inputs: {}\n", block.inputs().describe(items[item]));
@@ -115,7 +119,8 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
     if (level == "rtl") {  // a waveform window around the first failure
       std::filesystem::create_directories(o.wave_dir);
       TraceOptions trace;
-      trace.fst_path = (std::filesystem::path(o.wave_dir) / (block.name() + "_mismatch.fst")).string();
+      trace.fst_path =
+          (std::filesystem::path(o.wave_dir) / (block.name() + "_mismatch.fst")).string();
       trace.begin_cycle = fail_cycle > o.wave_before ? fail_cycle - o.wave_before : 0;
       trace.end_cycle = fail_cycle + o.wave_after;
       RunOptions traced = run_opt;
@@ -138,7 +143,8 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
     second.x_seed = kXSeeds[1];
     const RunResult again = make("rtl")->run(items, second);
     const RunResult& first = res.runs["rtl"];
-    const bool same = again.outputs == first.outputs && again.output_cycles == first.output_cycles &&
+    const bool same = again.outputs == first.outputs &&
+                      again.output_cycles == first.output_cycles &&
                       again.counters == first.counters && again.error.empty();
     fmt::print(log, "  x-check  rtl with random initial values, seeds {} and {}: {}\n", kXSeeds[0],
                kXSeeds[1], same ? "identical" : "DIFFERENT (an uninitialised value leaks)");
@@ -158,14 +164,16 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
     const uint64_t n = res.coverage[name];
     fmt::print(log, "  {:<36} {:>10}{}\n", name, n, n == 0 ? "  NOT HIT" : "");
   }
-  for (const auto& [name, value] : golden.counters) fmt::print(log, "  counter {:<28} {:>10}\n", name, value);
+  for (const auto& [name, value] : golden.counters)
+    fmt::print(log, "  counter {:<28} {:>10}\n", name, value);
 
   if (res.pass) {
     std::string who = "golden";
     for (const std::string& e : o.engines) who += " = " + e;
     fmt::print(log, "MATCH: all {} transactions bit-exact, {}\n", res.transactions, who);
   } else {
-    fmt::print(log, "FAIL: {} disagrees with golden; reproduce: {}\n", res.failing_engine, res.repro);
+    fmt::print(log, "FAIL: {} disagrees with golden; reproduce: {}\n", res.failing_engine,
+               res.repro);
   }
   return res;
 }

@@ -19,17 +19,17 @@ namespace tmu::tb {
 
 struct CosimOptions {
   uint64_t seed = 1;
-  size_t count = 10000;               // random items after the setup and directed ones
+  size_t count = 10000;  // random items after the setup and directed ones
   bool directed = true;
-  std::string vectors_in;             // replay these items instead of directed + random
-  std::string vectors_out;            // save the stimulus that was run
+  std::string vectors_in;   // replay these items instead of directed + random
+  std::string vectors_out;  // save the stimulus that was run
   std::vector<std::string> engines{"hls", "rtl"};  // each compared against golden
-  double in_idle = 0.25;              // probability of a bubble before each input item
-  double out_stall = 0.25;            // probability of output ready low in a cycle
-  bool x_check = true;                // rtl twice, different random initial values
+  double in_idle = 0.25;                           // probability of a bubble before each input item
+  double out_stall = 0.25;                         // probability of output ready low in a cycle
+  bool x_check = true;                             // rtl twice, different random initial values
   std::string wave_dir = "cosim_out";
   uint64_t wave_before = 64, wave_after = 16;  // cycles around the mismatch
-  int64_t inject_fault = -1;          // flip bit 0 of this output of every engine (teeth check)
+  int64_t inject_fault = -1;  // flip bit 0 of this output of every engine (teeth check)
 };
 
 struct CosimResult {
@@ -38,8 +38,8 @@ struct CosimResult {
   size_t transactions = 0;  // outputs compared per engine
   std::map<std::string, RunResult> runs;
   std::string failing_engine;
-  std::string wave_path;    // FST of the mismatch window, when one was written
-  std::string repro;        // the command that reproduces the run
+  std::string wave_path;  // FST of the mismatch window, when one was written
+  std::string repro;      // the command that reproduces the run
   Coverage coverage;
 };
 

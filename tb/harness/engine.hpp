@@ -38,6 +38,14 @@ struct RunOptions {
 
 using Counters = std::vector<std::pair<std::string, uint64_t>>;
 
+// The value of a named counter, if the run reported it.
+inline std::optional<uint64_t> counter_value(const Counters& counters, const std::string& name) {
+  for (const auto& [n, v] : counters) {
+    if (n == name) return v;
+  }
+  return std::nullopt;
+}
+
 struct RunResult {
   std::vector<Txn> outputs;             // in the order they left the block
   std::vector<uint64_t> output_cycles;  // clock cycle of each output (0 for untimed golden)

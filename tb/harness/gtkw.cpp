@@ -10,8 +10,9 @@
 
 namespace tmu::tb {
 
-void write_gtkw(const std::string& path, const std::string& fst_path, const std::vector<Port>& ports,
-                uint64_t time_start, uint64_t time_end, uint64_t marker_time) {
+void write_gtkw(const std::string& path, const std::string& fst_path,
+                const std::vector<Port>& ports, uint64_t time_start, uint64_t time_end,
+                uint64_t marker_time) {
   // Trace flags of the save format: 0x20 right-justify, 0x08 binary, 0x02 hex, 0x400 signed
   // decimal. Verilator puts the top module's ports in the scope TOP.
   std::string out = "[*] GTKWave save file written by texsim\n";

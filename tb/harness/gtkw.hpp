@@ -10,7 +10,8 @@
 
 namespace tmu::tb {
 
-void write_gtkw(const std::string& path, const std::string& fst_path, const std::vector<Port>& ports,
-                uint64_t time_start, uint64_t time_end, uint64_t marker_time);
+void write_gtkw(const std::string& path, const std::string& fst_path,
+                const std::vector<Port>& ports, uint64_t time_start, uint64_t time_end,
+                uint64_t marker_time);
 
 }  // namespace tmu::tb

@@ -21,7 +21,10 @@ namespace tmu::tb {
 class HandshakeDriver {
  public:
   HandshakeDriver(const std::vector<Txn>& items, size_t expected_outputs, const RunOptions& options)
-      : items_(items), expected_outputs_(expected_outputs), options_(options), rng_(options.stalls.seed) {
+      : items_(items),
+        expected_outputs_(expected_outputs),
+        options_(options),
+        rng_(options.stalls.seed) {
     result_.outputs.reserve(expected_outputs);
     result_.output_cycles.reserve(expected_outputs);
   }
@@ -57,16 +60,19 @@ class HandshakeDriver {
     }
     ++cycle_;
     if (cycle_ - last_progress_ > options_.max_idle_cycles) {
-      throw std::runtime_error("deadlock: no handshake for " + std::to_string(options_.max_idle_cycles) +
-                               " cycles (cycle " + std::to_string(cycle_) + ", " +
-                               std::to_string(next_) + " of " + std::to_string(items_.size()) +
-                               " items accepted, " + std::to_string(result_.outputs.size()) + " of " +
+      throw std::runtime_error("deadlock: no handshake for " +
+                               std::to_string(options_.max_idle_cycles) + " cycles (cycle " +
+                               std::to_string(cycle_) + ", " + std::to_string(next_) + " of " +
+                               std::to_string(items_.size()) + " items accepted, " +
+                               std::to_string(result_.outputs.size()) + " of " +
                                std::to_string(expected_outputs_) + " outputs)");
     }
   }
 
   // Every item accepted and every expected output seen.
-  bool done() const { return next_ == items_.size() && result_.outputs.size() == expected_outputs_; }
+  bool done() const {
+    return next_ == items_.size() && result_.outputs.size() == expected_outputs_;
+  }
   uint64_t cycle() const { return cycle_; }
   RunResult& result() { return result_; }
 

@@ -132,8 +132,9 @@ RunResult run_in_child(const std::function<RunResult()>& fn) {
   ::waitpid(pid, &status, 0);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     RunResult r;
-    r.error = WIFSIGNALED(status) ? "hls child killed by signal " + std::to_string(WTERMSIG(status))
-                                  : "hls child exited with status " + std::to_string(WEXITSTATUS(status));
+    r.error = WIFSIGNALED(status)
+                  ? "hls child killed by signal " + std::to_string(WTERMSIG(status))
+                  : "hls child exited with status " + std::to_string(WEXITSTATUS(status));
     return r;
   }
   return decode(data);

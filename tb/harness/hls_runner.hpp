@@ -5,11 +5,10 @@
 // runs can then share one texsim or test process.
 #pragma once
 
-#include <systemc>
-
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <systemc>
 #include <vector>
 
 #include "harness/engine.hpp"
@@ -45,7 +44,10 @@ class ScDriver : public sc_core::sc_module {
   ScDriver(sc_core::sc_module_name name, sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n,
            ScAdapter& adapter, const std::vector<Txn>& items, size_t expected_outputs,
            const RunOptions& options)
-      : sc_module(name), rst_n_(rst_n), adapter_(adapter), driver_(items, expected_outputs, options) {
+      : sc_module(name),
+        rst_n_(rst_n),
+        adapter_(adapter),
+        driver_(items, expected_outputs, options) {
     SC_THREAD(run);
     sensitive << clk.posedge_event();
     clk_ = &clk;
@@ -81,7 +83,8 @@ class ScDriver : public sc_core::sc_module {
     } catch (const std::exception& e) {
       result.error = e.what();
     }
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.cycles = driver_.cycle();
     result.counters = adapter_.counters();
     if (const std::string env = adapter_.env_error(); !env.empty()) {
@@ -98,8 +101,10 @@ class ScDriver : public sc_core::sc_module {
 
 // Elaborates `make_bench(clk, rst_n)` (the DUT with its adapter) in a child process and runs it.
 template <class Bench>
-RunResult run_hls(const std::function<std::unique_ptr<Bench>(sc_core::sc_clock&, sc_core::sc_signal<bool>&)>& make_bench,
-                  const std::vector<Txn>& items, size_t expected_outputs, const RunOptions& options) {
+RunResult run_hls(
+    const std::function<std::unique_ptr<Bench>(sc_core::sc_clock&, sc_core::sc_signal<bool>&)>&
+        make_bench,
+    const std::vector<Txn>& items, size_t expected_outputs, const RunOptions& options) {
   return run_in_child([&]() -> RunResult {
     sc_core::sc_clock clk("clk", 10, sc_core::SC_NS);
     sc_core::sc_signal<bool> rst_n("rst_n");

@@ -51,8 +51,8 @@ inline void append_error(RunResult& result, const std::string& error) {
 inline int verilator_seed(uint64_t seed) { return static_cast<int>(1 + seed % 0x7FFFFFFEull); }
 
 template <class Model>
-RunResult run_rtl(RtlAdapter<Model>& adapter, const std::vector<Txn>& items, size_t expected_outputs,
-                  const RunOptions& options) {
+RunResult run_rtl(RtlAdapter<Model>& adapter, const std::vector<Txn>& items,
+                  size_t expected_outputs, const RunOptions& options) {
   auto ctx = std::make_unique<VerilatedContext>();
   ctx->randReset(2);  // every flop and memory starts random: reset bugs show up as X leaks
   ctx->randSeed(verilator_seed(options.x_seed));

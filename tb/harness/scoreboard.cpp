@@ -43,8 +43,8 @@ std::string mismatch_table(const Schema& outputs, const Mismatch& m) {
     const int fi = static_cast<int>(f);
     const std::string e = m.expected ? outputs.value_text(fi, m.expected->f[f]) : "(none)";
     const std::string g = m.got ? outputs.value_text(fi, m.got->f[f]) : "(missing)";
-    const bool differs = std::find(m.fields.begin(), m.fields.end(), fi) != m.fields.end() ||
-                         !m.expected || !m.got;
+    const bool differs =
+        std::find(m.fields.begin(), m.fields.end(), fi) != m.fields.end() || !m.expected || !m.got;
     out += fmt::format("    {:<12} {:<24} {:<24}{}\n", outputs.fields()[f].name, e, g,
                        differs ? "  <-- differs" : "");
   }

@@ -12,18 +12,18 @@
 namespace tmu::tb {
 
 struct Mismatch {
-  size_t output_index = 0;     // which output transaction
-  std::vector<int> fields;     // fields that differ (empty when the output is missing)
+  size_t output_index = 0;  // which output transaction
+  std::vector<int> fields;  // fields that differ (empty when the output is missing)
   std::optional<Txn> expected;
-  std::optional<Txn> got;      // empty when the engine produced too few outputs
+  std::optional<Txn> got;  // empty when the engine produced too few outputs
 };
 
 struct Comparison {
-  size_t compared = 0;     // outputs compared
-  size_t mismatches = 0;   // outputs that differ, including missing and extra ones
+  size_t compared = 0;    // outputs compared
+  size_t mismatches = 0;  // outputs that differ, including missing and extra ones
   std::optional<Mismatch> first;
   std::vector<std::string> counter_diffs;  // "hits: expected 10, got 11"
-  std::string error;                        // the engine's own failure (deadlock, duplicate)
+  std::string error;                       // the engine's own failure (deadlock, duplicate)
   bool match() const { return mismatches == 0 && counter_diffs.empty() && error.empty(); }
 };
 

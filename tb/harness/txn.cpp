@@ -23,7 +23,8 @@ std::string Schema::value_text(int field, uint64_t bits) const {
   std::string text = fmt::format("0x{:0{}x}", bits, digits);
   if (f.is_signed || f.frac_bits > 0) {
     const int64_t raw = fx::fit(static_cast<int64_t>(bits), f, fx::Overflow::kWrap);
-    text += fmt::format(" ({})", static_cast<double>(raw) / static_cast<double>(int64_t{1} << f.frac_bits));
+    text += fmt::format(" ({})",
+                        static_cast<double>(raw) / static_cast<double>(int64_t{1} << f.frac_bits));
   }
   return text;
 }

@@ -56,10 +56,12 @@ bool parse_value(const std::string& text, const fx::Format& f, uint64_t& bits, s
     return false;
   }
   if (!f.holds(v)) {
-    why = fmt::format("{} is outside {} (raw {}..{})", v, fx::to_string(f), f.min_raw(), f.max_raw());
+    why =
+        fmt::format("{} is outside {} (raw {}..{})", v, fx::to_string(f), f.min_raw(), f.max_raw());
     return false;
   }
-  bits = static_cast<uint64_t>(v) & (f.width() < 64 ? (uint64_t{1} << f.width()) - 1 : ~uint64_t{0});
+  bits =
+      static_cast<uint64_t>(v) & (f.width() < 64 ? (uint64_t{1} << f.width()) - 1 : ~uint64_t{0});
   return true;
 }
 
@@ -92,8 +94,9 @@ std::vector<Txn> read_vectors(const std::string& path, const Schema& schema) {
       continue;
     }
     if (cells.size() != column_field.size()) {
-      throw InputError(path, fmt::format("line {}", line_no),
-                       fmt::format("{} values for {} header fields", cells.size(), column_field.size()));
+      throw InputError(
+          path, fmt::format("line {}", line_no),
+          fmt::format("{} values for {} header fields", cells.size(), column_field.size()));
     }
     Txn t;
     for (size_t c = 0; c < cells.size(); ++c) {

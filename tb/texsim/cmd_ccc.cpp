@@ -2,9 +2,9 @@
 // the round trip of an image through golden and rtl with the bit-exact verdict.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -22,7 +22,9 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-std::string rate(double n, double s) { return s > 0 ? fmt::format("{:.2f} M texels/s", n / s / 1e6) : "-"; }
+std::string rate(double n, double s) {
+  return s > 0 ? fmt::format("{:.2f} M texels/s", n / s / 1e6) : "-";
+}
 
 ccc::Texture encode_file(const std::string& in, ImageRgb8* image_out) {
   ImageRgb8 image = read_image(in);
@@ -30,9 +32,10 @@ ccc::Texture encode_file(const std::string& in, ImageRgb8* image_out) {
   ccc::Texture tex = ccc::encode(image);
   const double t = seconds_since(t0);
   const ccc::EncodeReport rep = ccc::report_encoding(image, tex);
-  fmt::print("encoded {} ({}x{}) in {:.3f} s: PSNR {:.2f} dB (unquantized two-colour ideal {:.2f} dB), "
-             "{:.3f} bits per texel\n",
-             in, image.width, image.height, t, rep.psnr_encoded, rep.psnr_ideal, rep.bits_per_texel);
+  fmt::print(
+      "encoded {} ({}x{}) in {:.3f} s: PSNR {:.2f} dB (unquantized two-colour ideal {:.2f} dB), "
+      "{:.3f} bits per texel\n",
+      in, image.width, image.height, t, rep.psnr_encoded, rep.psnr_ideal, rep.bits_per_texel);
   if (image_out) *image_out = std::move(image);
   return tex;
 }
@@ -43,13 +46,15 @@ ImageRgb8 decode_through(const ccc::Texture& tex, const std::string& level) {
   tb::RunResult run;
   const ImageRgb8 img = tb::decode_with_engine(tex, *engine, &run);
   const double texels = static_cast<double>(img.pixels.size());
-  fmt::print("  {:<6} decoded {} texels in {:.3f} s ({}){}\n", level, img.pixels.size(), run.seconds,
-             rate(texels, run.seconds), run.cycles ? fmt::format(", {} cycles", run.cycles) : "");
+  fmt::print("  {:<6} decoded {} texels in {:.3f} s ({}){}\n", level, img.pixels.size(),
+             run.seconds, rate(texels, run.seconds),
+             run.cycles ? fmt::format(", {} cycles", run.cycles) : "");
   return img;
 }
 
 // Compares two decodes texel for texel; prints the verdict; returns true on a match.
-bool check(const ImageRgb8& ref, const ImageRgb8& got, const std::string& ref_name, const std::string& got_name) {
+bool check(const ImageRgb8& ref, const ImageRgb8& got, const std::string& ref_name,
+           const std::string& got_name) {
   size_t differ = 0;
   std::string first;
   for (int y = 0; y < ref.height; ++y) {
@@ -57,8 +62,8 @@ bool check(const ImageRgb8& ref, const ImageRgb8& got, const std::string& ref_na
       const Rgb8 a = ref.at(x, y), b = got.at(x, y);
       if (a == b) continue;
       if (++differ <= 5) {
-        first += fmt::format("    texel ({}, {}): {} 0x{:06x}, {} 0x{:06x}\n", x, y, ref_name, pack_rgb(a),
-                             got_name, pack_rgb(b));
+        first += fmt::format("    texel ({}, {}): {} 0x{:06x}, {} 0x{:06x}\n", x, y, ref_name,
+                             pack_rgb(a), got_name, pack_rgb(b));
       }
     }
   }
@@ -66,14 +71,15 @@ bool check(const ImageRgb8& ref, const ImageRgb8& got, const std::string& ref_na
     fmt::print("MATCH: {} = {}, all {} texels bit-exact\n", ref_name, got_name, ref.pixels.size());
     return true;
   }
-  fmt::print("MISMATCH: {} of {} texels differ between {} and {}; first ones:\n{}", differ, ref.pixels.size(),
-             ref_name, got_name, first);
+  fmt::print("MISMATCH: {} of {} texels differ between {} and {}; first ones:\n{}", differ,
+             ref.pixels.size(), ref_name, got_name, first);
   return false;
 }
 
 // Magnifies the texture 2x through the low-cost unit (cache + bilinear) on golden and rtl;
 // prints the verdict and the cache statistics; returns the rtl image, or nothing on a mismatch.
-std::optional<ImageRgb8> magnify_through_unit(const std::string& ccc_path, const ccc::Texture& tex) {
+std::optional<ImageRgb8> magnify_through_unit(const std::string& ccc_path,
+                                              const ccc::Texture& tex) {
   tb::BlockOptions opt;
   opt.texture = ccc_path;
   const tb::CccBilinearBlock block(opt);
@@ -81,29 +87,34 @@ std::optional<ImageRgb8> magnify_through_unit(const std::string& ccc_path, const
   const std::vector<tb::Txn> items = tb::bilinear_resample_items(tex, w, h);
   const tb::RunResult golden = block.engine("golden")->run(items, tb::RunOptions{});
   const tb::RunResult rtl = block.engine("rtl")->run(items, tb::RunOptions{});
-  if (!rtl.error.empty()) throw std::runtime_error("rtl run of the low-cost unit failed: " + rtl.error);
+  if (!rtl.error.empty())
+    throw std::runtime_error("rtl run of the low-cost unit failed: " + rtl.error);
   auto counter = [&](const char* name) {
-    for (const auto& [n, v] : golden.counters) if (n == name) return v;
-    return uint64_t{0};
+    return tb::counter_value(golden.counters, name).value_or(0);
   };
   const uint64_t hits = counter("hits"), misses = counter("misses");
-  fmt::print("low-cost unit (cache + bilinear), 2x magnification to {}x{}: cache hits {}, misses {}, "
-             "prefetches {} (hit rate {:.1f} %); rtl {} cycles, {:.2f} cycles per pixel\n",
-             w, h, hits, misses, counter("prefetches"), 100.0 * static_cast<double>(hits) /
-             static_cast<double>(std::max<uint64_t>(hits + misses, 1)), rtl.cycles,
-             static_cast<double>(rtl.cycles) / (double{1} * w * h));
+  fmt::print(
+      "low-cost unit (cache + bilinear), 2x magnification to {}x{}: cache hits {}, misses {}, "
+      "prefetches {} (hit rate {:.1f} %); rtl {} cycles, {:.2f} cycles per pixel\n",
+      w, h, hits, misses, counter("prefetches"),
+      100.0 * static_cast<double>(hits) / static_cast<double>(std::max<uint64_t>(hits + misses, 1)),
+      rtl.cycles, static_cast<double>(rtl.cycles) / (double{1} * w * h));
   if (golden.outputs != rtl.outputs || golden.counters != rtl.counters) {
     size_t differ = 0;
     for (size_t i = 0; i < std::min(golden.outputs.size(), rtl.outputs.size()); ++i) {
       differ += golden.outputs[i] != rtl.outputs[i];
     }
-    fmt::print("MISMATCH: {} of {} pixels differ (or the counters do); reproduce with "
-               "texsim cosim ccc-bilinear --texture {}\n", differ, size_t{w} * h, ccc_path);
+    fmt::print(
+        "MISMATCH: {} of {} pixels differ (or the counters do); reproduce with "
+        "texsim cosim ccc-bilinear --texture {}\n",
+        differ, size_t{w} * h, ccc_path);
     return std::nullopt;
   }
-  fmt::print("MATCH: golden = rtl, all {} pixels and the cache counters bit-exact\n", size_t{w} * h);
+  fmt::print("MATCH: golden = rtl, all {} pixels and the cache counters bit-exact\n",
+             size_t{w} * h);
   ImageRgb8 img(static_cast<int>(w), static_cast<int>(h));
-  for (size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = unpack_rgb(static_cast<uint32_t>(rtl.outputs[i].f[0]));
+  for (size_t i = 0; i < img.pixels.size(); ++i)
+    img.pixels[i] = unpack_rgb(static_cast<uint32_t>(rtl.outputs[i].f[0]));
   return img;
 }
 
@@ -112,30 +123,39 @@ const std::vector<std::string> kEngines{"golden", "hls", "rtl"};
 }  // namespace
 
 void add_ccc_command(CLI::App& app, ExitCode& exit_code) {
-  auto* ccc = app.add_subcommand("ccc", "Colour cell compression (000 §3): encode, decode, round trip");
+  auto* ccc =
+      app.add_subcommand("ccc", "Colour cell compression (000 §3): encode, decode, round trip");
   ccc->require_subcommand(1);
 
   {
-    auto* cmd = ccc->add_subcommand("encode", "Encode an image (any format OpenImageIO reads) to .ccc;\n"
-                                              "prints PSNR against the input, bits per texel and time");
+    auto* cmd = ccc->add_subcommand("encode",
+                                    "Encode an image (any format OpenImageIO reads) to .ccc;\n"
+                                    "prints PSNR against the input, bits per texel and time");
     auto in = std::make_shared<std::string>(), out = std::make_shared<std::string>();
     cmd->add_option("input", *in, "Input image")->required()->check(CLI::ExistingFile);
     cmd->add_option("output", *out, "Output .ccc file (written atomically)")->required();
     cmd->callback([in, out] { ccc::write_ccc(*out, encode_file(*in, nullptr)); });
   }
   {
-    auto* cmd = ccc->add_subcommand("decode", "Decode a .ccc file to an image through one engine's decoder");
+    auto* cmd = ccc->add_subcommand("decode",
+                                    "Decode a .ccc file to an image through one engine's decoder");
     auto in = std::make_shared<std::string>(), out = std::make_shared<std::string>();
-    auto engine = std::make_shared<std::string>("golden"), check_against = std::make_shared<std::string>();
+    auto engine = std::make_shared<std::string>("golden"),
+         check_against = std::make_shared<std::string>();
     cmd->add_option("input", *in, "Input .ccc file")->required()->check(CLI::ExistingFile);
-    cmd->add_option("output", *out, "Output image (format from the extension, written atomically)")->required();
-    cmd->add_option("--engine", *engine, "golden | hls | rtl")->check(CLI::IsMember(kEngines))->capture_default_str();
-    cmd->add_option("--check", *check_against, "Also decode with this engine and compare every texel bit for bit")
+    cmd->add_option("output", *out, "Output image (format from the extension, written atomically)")
+        ->required();
+    cmd->add_option("--engine", *engine, "golden | hls | rtl")
+        ->check(CLI::IsMember(kEngines))
+        ->capture_default_str();
+    cmd->add_option("--check", *check_against,
+                    "Also decode with this engine and compare every texel bit for bit")
         ->check(CLI::IsMember(kEngines));
     cmd->callback([=, &exit_code] {
       const ccc::Texture tex = ccc::read_ccc(*in);
       const ImageRgb8 img = decode_through(tex, *engine);
-      if (!check_against->empty() && !check(decode_through(tex, *check_against), img, *check_against, *engine)) {
+      if (!check_against->empty() &&
+          !check(decode_through(tex, *check_against), img, *check_against, *engine)) {
         exit_code.value = 1;
         return;  // no output in place of a wrong one
       }
@@ -145,9 +165,10 @@ void add_ccc_command(CLI::App& app, ExitCode& exit_code) {
   }
   {
     auto* cmd = ccc->add_subcommand(
-        "roundtrip", "Encode an image, decode it through golden and rtl, and check they agree bit for bit;\n"
-                     "then magnify it 2x through the low-cost unit (cache + bilinear) on golden and rtl.\n"
-                     "Writes OUT/<name>.ccc, OUT/<name>_decoded.png, OUT/<name>_magnified.png");
+        "roundtrip",
+        "Encode an image, decode it through golden and rtl, and check they agree bit for bit;\n"
+        "then magnify it 2x through the low-cost unit (cache + bilinear) on golden and rtl.\n"
+        "Writes OUT/<name>.ccc, OUT/<name>_decoded.png, OUT/<name>_magnified.png");
     auto in = std::make_shared<std::string>(), out_dir = std::make_shared<std::string>("out");
     cmd->add_option("input", *in, "Input image")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", *out_dir, "Output directory")->capture_default_str();
@@ -171,7 +192,8 @@ void add_ccc_command(CLI::App& app, ExitCode& exit_code) {
       const auto dir = std::filesystem::path(*out_dir);
       write_image((dir / (stem + "_decoded.png")).string(), rtl);
       write_image((dir / (stem + "_magnified.png")).string(), *magnified);
-      fmt::print("wrote {}, {}_decoded.png and {}_magnified.png in {}\n", ccc_path, stem, stem, *out_dir);
+      fmt::print("wrote {}, {}_decoded.png and {}_magnified.png in {}\n", ccc_path, stem, stem,
+                 *out_dir);
     });
   }
 }
