@@ -4,7 +4,8 @@
 set -euo pipefail
 
 PACKAGES=(
-  cmake ninja-build g++ ccache pkg-config            # build
+  cmake ninja-build g++ ccache pkg-config git       # build
+  clang-format                                       # style check
   verilator libsystemc-dev                           # rtl and hls models
   libglm-dev libopenimageio-dev                      # ideal models, image I/O
   libcli11-dev nlohmann-json3-dev libfmt-dev         # texsim

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Fails if any C++ file differs from clang-format's output (.clang-format); prints the files.
+# To fix: scripts/format_check.sh --fix
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+mapfile -t files < <(git ls-files 'golden/*' 'hls/*' 'tb/*' 'tests/*' 'bench/*' | grep -E '\.(cpp|hpp|inl)$')
+if [[ "${1:-}" == "--fix" ]]; then
+  clang-format -i "${files[@]}"
+  exit 0
+fi
+bad=()
+for f in "${files[@]}"; do
+  clang-format --dry-run --Werror "$f" >/dev/null 2>&1 || bad+=("$f")
+done
+if ((${#bad[@]})); then
+  printf 'not clang-formatted (scripts/format_check.sh --fix):\n'; printf '  %s\n' "${bad[@]}"
+  exit 1
+fi
+echo "format: ${#files[@]} files clean"
