@@ -50,6 +50,41 @@ package tmu_pkg;
   localparam int unsigned CccBlockAddrFrac = 0;
   typedef logic [CccBlockAddrW-1:0] ccc_block_addr_t;
 
+  // Lod: SQ6.8, level of detail lambda = log2 of the footprint size in level-0 texels
+  localparam int unsigned LodW = 14;
+  localparam int unsigned LodFrac = 8;
+  typedef logic signed [LodW-1:0] lod_t;
+
+  // MipLevel: UQ4.0, mipmap level 0..10
+  localparam int unsigned MipLevelW = 4;
+  localparam int unsigned MipLevelFrac = 0;
+  typedef logic [MipLevelW-1:0] mip_level_t;
+
+  // MipLog2: UQ4.0, log2 of a TEXRAM texture side, 0..10
+  localparam int unsigned MipLog2W = 4;
+  localparam int unsigned MipLog2Frac = 0;
+  typedef logic [MipLog2W-1:0] mip_log2_t;
+
+  // MipCoord: UQ10.0, texel (or CCC block) coordinate within a level, 0..1023
+  localparam int unsigned MipCoordW = 10;
+  localparam int unsigned MipCoordFrac = 0;
+  typedef logic [MipCoordW-1:0] mip_coord_t;
+
+  // Bank: UQ3.0, TEXRAM memory bank 0..7: 4 (level & 1) + (x & 1) + 2 (y & 1)
+  localparam int unsigned BankW = 3;
+  localparam int unsigned BankFrac = 0;
+  typedef logic [BankW-1:0] bank_t;
+
+  // BankAddr: UQ21.0, cell address within a bank (8-bit cells)
+  localparam int unsigned BankAddrW = 21;
+  localparam int unsigned BankAddrFrac = 0;
+  typedef logic [BankAddrW-1:0] bank_addr_t;
+
+  // Rgba8888: UQ32.0, packed colour: R 31:24, G 23:16, B 15:8, A 7:0
+  localparam int unsigned Rgba8888W = 32;
+  localparam int unsigned Rgba8888Frac = 0;
+  typedef logic [Rgba8888W-1:0] rgba8888_t;
+
   // StatCount: UQ32.0, statistics counter (wraps)
   localparam int unsigned StatCountW = 32;
   localparam int unsigned StatCountFrac = 0;
@@ -66,6 +101,15 @@ package tmu_pkg;
 
   // entries of the low-cost unit's decoded-block cache
   localparam int unsigned CccCacheEntries = 4;
+
+  // TEXRAM: largest texture side is 2^10 = 1024 texels
+  localparam int unsigned MaxMipLog2 = 10;
+
+  // TEXRAM memory banks
+  localparam int unsigned Banks = 8;
+
+  // byte planes of a texel (true colour R G B A) or of a CCC block word
+  localparam int unsigned Planes = 4;
 
   // verilator lint_on UNUSEDPARAM
 
