@@ -6,8 +6,11 @@
 
 namespace tmu::texram {
 
-Geometry::Geometry(int log2_w, int log2_h, bool block_grid)
-    : log2_w_(log2_w), log2_h_(log2_h), block_grid_(block_grid) {
+Geometry::Geometry(int log2_w, int log2_h, int planes, bool block_grid)
+    : log2_w_(log2_w), log2_h_(log2_h), planes_(planes), block_grid_(block_grid) {
+  if (planes != 1 && planes != formats::kPlanes) {
+    throw std::invalid_argument("texram::Geometry: a texture has 1 or 4 planes");
+  }
   if (log2_w < 0 || log2_h < 0 || log2_w > formats::kMaxMipLog2 || log2_h > formats::kMaxMipLog2) {
     throw std::invalid_argument("texram::Geometry: log2 sizes must be 0.." +
                                 std::to_string(formats::kMaxMipLog2));
@@ -21,7 +24,7 @@ Geometry::Geometry(int log2_w, int log2_h, bool block_grid)
     offset_[static_cast<size_t>(l)] = used[l & 1];
     used[l & 1] += (stored_width(l) / 2) * (stored_height(l) / 2);
   }
-  plane_stride_ = std::max(used[0], used[1]);
+  bank_cells_ = static_cast<uint32_t>(planes) * std::max(used[0], used[1]);
 }
 
 uint32_t Geometry::texel_width(int level) const { return uint32_t{1} << std::max(log2_w_ - level, 0); }
@@ -30,8 +33,8 @@ uint32_t Geometry::stored_width(int level) const { return std::max(grid_width(le
 uint32_t Geometry::stored_height(int level) const { return std::max(grid_height(level), 2u); }
 
 BankCell Geometry::cell(int level, uint32_t x, uint32_t y, int plane) const {
-  return {bank_of(level, x, y), static_cast<uint32_t>(plane) * plane_stride_ + level_offset(level) +
-                                    (y >> 1) * (stored_width(level) / 2) + (x >> 1)};
+  const uint32_t position = level_offset(level) + (y >> 1) * (stored_width(level) / 2) + (x >> 1);
+  return {bank_of(level, x, y), static_cast<uint32_t>(planes_) * position + static_cast<uint32_t>(plane)};
 }
 
 }  // namespace tmu::texram

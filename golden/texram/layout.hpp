@@ -10,8 +10,11 @@
 //   finds its four taps in four banks; the 1 x 1 top level takes four cells.
 // - Within a bank, the levels of its parity follow each other from level 0 (or 1) upward; a
 //   level's cells are row-major over its stored size halved in both directions.
-// - A texture is up to four byte planes (true colour R, G, B, A; the four bytes of a CCC
-//   block word, 31:24 first); plane p starts at p * plane_stride in every bank.
+// - A texture has one byte plane (luminance, index, single component) or four (true colour
+//   R, G, B, A; the four bytes of a CCC block word, 31:24 first). The planes of a texel are
+//   interleaved cell by cell (address = planes * position + plane), so the four accesses of a
+//   true-colour sample stay in one DRAM page, as the patent's "2 x 2 texel space assigned one
+//   RGBa quadruple" does.
 // - A grid is texels, or for CCC textures 4 x 4 blocks: level l of a 2^a x 2^b texture is
 //   max(2^(a-l), 1) texels wide, and ceil of that / 4 blocks.
 #pragma once
@@ -33,8 +36,9 @@ struct BankCell {
 
 class Geometry {
  public:
-  // A 2^log2_w x 2^log2_h texture (each 0..MaxMipLog2); block_grid: the grid is CCC blocks.
-  Geometry(int log2_w, int log2_h, bool block_grid = false);
+  // A 2^log2_w x 2^log2_h texture (each 0..MaxMipLog2) of `planes` (1 or 4) byte planes;
+  // block_grid: the grid is CCC blocks.
+  Geometry(int log2_w, int log2_h, int planes = 1, bool block_grid = false);
 
   int levels() const { return levels_; }  // level 0 .. levels() - 1 (the 1 x 1 texel level last)
   uint32_t texel_width(int level) const;   // texels
@@ -43,8 +47,10 @@ class Geometry {
   uint32_t grid_height(int level) const { return grid_h_[static_cast<size_t>(level)]; }
   uint32_t stored_width(int level) const;   // max(grid width, 2)
   uint32_t stored_height(int level) const;  // max(grid height, 2)
+  // First position of `level` in its banks (a position holds `planes` cells).
   uint32_t level_offset(int level) const { return offset_[static_cast<size_t>(level)]; }
-  uint32_t plane_stride() const { return plane_stride_; }  // cells of one plane in the fuller bank
+  uint32_t bank_cells() const { return bank_cells_; }  // cells used in the fuller bank
+  int planes() const { return planes_; }
   bool block_grid() const { return block_grid_; }
   int log2_width() const { return log2_w_; }
   int log2_height() const { return log2_h_; }
@@ -54,11 +60,11 @@ class Geometry {
   BankCell cell(int level, uint32_t x, uint32_t y, int plane = 0) const;
 
  private:
-  int log2_w_, log2_h_;
+  int log2_w_, log2_h_, planes_;
   bool block_grid_;
   int levels_;
-  std::array<uint32_t, kMaxLevels> grid_w_{}, grid_h_{}, offset_{};
-  uint32_t plane_stride_ = 0;
+  std::array<uint32_t, kMaxLevels> grid_w_{}, grid_h_{}, offset_{};  // offset in positions
+  uint32_t bank_cells_ = 0;
 };
 
 // The bank of a stored position: 4 (level & 1) + (x & 1) + 2 (y & 1).
