@@ -50,6 +50,27 @@ void for_each_block(const ImageRgb8& image, F&& f) {
   }
 }
 
+// The block word of a clustered block: its two colours as CLUT indices, and every texel's
+// decision bit re-decided against the two quantized colours.
+uint32_t quantized_block(const TwoColourBlock& cluster, const std::array<Rgb8, 16>& texels,
+                         const Palette& palette, const PaletteSearch& search) {
+  Block block;
+  block.a = search.nearest(cluster.a);
+  block.b = cluster.bits != 0 ? search.nearest(cluster.b) : block.a;
+  // The plane split was made for the exact means; against the quantized colours some
+  // texels may now be nearer the other one. Re-deciding never increases the error.
+  if (block.a != block.b) {
+    const Rgb8 ca = palette.clut[block.a];
+    const Rgb8 cb = palette.clut[block.b];
+    for (unsigned j = 0; j < 16; ++j) {
+      if (distance2(texels[j], cb) < distance2(texels[j], ca)) {
+        block.bits = static_cast<uint16_t>(block.bits | (1u << j));
+      }
+    }
+  }
+  return block.word();
+}
+
 }  // namespace
 
 std::array<Rgb8, 16> block_texels(const ImageRgb8& image, uint32_t bx, uint32_t by) {
@@ -135,48 +156,41 @@ TwoColourBlock cluster_block(const std::array<Rgb8, 16>& texels) {
   return out;
 }
 
-Texture encode(const ImageRgb8& image) {
-  check_size(image);
+Texture encode(const ImageRgb8& image) { return encode_levels({image}).front(); }
+
+std::vector<Texture> encode_levels(const std::vector<ImageRgb8>& images) {
   struct Pending {
     TwoColourBlock cluster;
     std::array<Rgb8, 16> texels;
   };
-  std::vector<Pending> pending;
+  std::vector<std::vector<Pending>> pending(images.size());
   std::vector<WeightedColour> colours;
-  for_each_block(
-      image, [&](uint32_t, uint32_t, const std::array<Rgb8, 16>& texels, const TwoColourBlock& c) {
-        const auto count_b = static_cast<uint64_t>(std::popcount(c.bits));
-        // Weights are texel counts, so the CLUT is spent where most texels are.
-        colours.push_back({c.a, 16 - count_b});
-        if (count_b > 0) colours.push_back({c.b, count_b});
-        pending.push_back({c, texels});
-      });
+  for (size_t i = 0; i < images.size(); ++i) {
+    check_size(images[i]);
+    for_each_block(images[i], [&](uint32_t, uint32_t, const std::array<Rgb8, 16>& texels,
+                                  const TwoColourBlock& c) {
+      const auto count_b = static_cast<uint64_t>(std::popcount(c.bits));
+      // Weights are texel counts, so the CLUT is spent where most texels are.
+      colours.push_back({c.a, 16 - count_b});
+      if (count_b > 0) colours.push_back({c.b, count_b});
+      pending[i].push_back({c, texels});
+    });
+  }
+  if (images.empty()) throw std::invalid_argument("ccc::encode_levels: no image");
 
   const Palette palette = median_cut(colours);
   const PaletteSearch search(palette);
-  Texture tex;
-  tex.width = static_cast<uint32_t>(image.width);
-  tex.height = static_cast<uint32_t>(image.height);
-  tex.clut = palette.clut;
-  tex.blocks.reserve(pending.size());
-  for (const Pending& p : pending) {
-    Block block;
-    block.a = search.nearest(p.cluster.a);
-    block.b = p.cluster.bits != 0 ? search.nearest(p.cluster.b) : block.a;
-    // The plane split was made for the exact means; against the quantized colours some
-    // texels may now be nearer the other one. Re-deciding never increases the error.
-    if (block.a != block.b) {
-      const Rgb8 ca = palette.clut[block.a];
-      const Rgb8 cb = palette.clut[block.b];
-      for (unsigned j = 0; j < 16; ++j) {
-        if (distance2(p.texels[j], cb) < distance2(p.texels[j], ca)) {
-          block.bits = static_cast<uint16_t>(block.bits | (1u << j));
-        }
-      }
-    }
-    tex.blocks.push_back(block.word());
+  std::vector<Texture> out;
+  for (size_t i = 0; i < images.size(); ++i) {
+    Texture& tex = out.emplace_back();
+    tex.width = static_cast<uint32_t>(images[i].width);
+    tex.height = static_cast<uint32_t>(images[i].height);
+    tex.clut = palette.clut;
+    tex.blocks.reserve(pending[i].size());
+    for (const Pending& p : pending[i])
+      tex.blocks.push_back(quantized_block(p.cluster, p.texels, palette, search));
   }
-  return tex;
+  return out;
 }
 
 ImageRgb8 two_colour_ideal(const ImageRgb8& image) {

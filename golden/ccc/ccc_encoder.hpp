@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "ccc/ccc_texture.hpp"
 #include "ccc/symmetric_eigen.hpp"
@@ -32,6 +33,10 @@ TwoColourBlock cluster_block(const std::array<Rgb8, 16>& texels);
 // Encodes an image (width, height >= 1; throws std::invalid_argument otherwise).
 // Deterministic: the same image always gives the same bytes.
 Texture encode(const ImageRgb8& image);
+
+// Encodes several images (e.g. the levels of a mipmap) with one shared CLUT, quantized from
+// the cluster colours of all of them: the hardware has a single CLUT per texture.
+std::vector<Texture> encode_levels(const std::vector<ImageRgb8>& images);
 
 // The unquantized two-colour reconstruction: every texel takes its cluster mean rounded to
 // the nearest 8-bit value. What encode() would give with an unlimited CLUT.

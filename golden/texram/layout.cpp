@@ -27,14 +27,19 @@ Geometry::Geometry(int log2_w, int log2_h, int planes, bool block_grid)
   bank_cells_ = static_cast<uint32_t>(planes) * std::max(used[0], used[1]);
 }
 
-uint32_t Geometry::texel_width(int level) const { return uint32_t{1} << std::max(log2_w_ - level, 0); }
-uint32_t Geometry::texel_height(int level) const { return uint32_t{1} << std::max(log2_h_ - level, 0); }
+uint32_t Geometry::texel_width(int level) const {
+  return uint32_t{1} << std::max(log2_w_ - level, 0);
+}
+uint32_t Geometry::texel_height(int level) const {
+  return uint32_t{1} << std::max(log2_h_ - level, 0);
+}
 uint32_t Geometry::stored_width(int level) const { return std::max(grid_width(level), 2u); }
 uint32_t Geometry::stored_height(int level) const { return std::max(grid_height(level), 2u); }
 
 BankCell Geometry::cell(int level, uint32_t x, uint32_t y, int plane) const {
   const uint32_t position = level_offset(level) + (y >> 1) * (stored_width(level) / 2) + (x >> 1);
-  return {bank_of(level, x, y), static_cast<uint32_t>(planes_) * position + static_cast<uint32_t>(plane)};
+  return {bank_of(level, x, y),
+          static_cast<uint32_t>(planes_) * position + static_cast<uint32_t>(plane)};
 }
 
 }  // namespace tmu::texram

@@ -41,9 +41,11 @@ class Geometry {
   Geometry(int log2_w, int log2_h, int planes = 1, bool block_grid = false);
 
   int levels() const { return levels_; }  // level 0 .. levels() - 1 (the 1 x 1 texel level last)
-  uint32_t texel_width(int level) const;   // texels
+  uint32_t texel_width(int level) const;  // texels
   uint32_t texel_height(int level) const;
-  uint32_t grid_width(int level) const { return grid_w_[static_cast<size_t>(level)]; }  // grid cells
+  uint32_t grid_width(int level) const {
+    return grid_w_[static_cast<size_t>(level)];
+  }  // grid cells
   uint32_t grid_height(int level) const { return grid_h_[static_cast<size_t>(level)]; }
   uint32_t stored_width(int level) const;   // max(grid width, 2)
   uint32_t stored_height(int level) const;  // max(grid height, 2)

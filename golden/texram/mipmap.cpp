@@ -22,7 +22,8 @@ Pyramid8 build_pyramid(const Level8& level0) {
       for (uint32_t x = 0; x < dst.width; ++x) {
         // A one-texel-wide (-high) source repeats its column (row).
         const uint32_t x0 = std::min(2 * x, src.width - 1), x1 = std::min(2 * x + 1, src.width - 1);
-        const uint32_t y0 = std::min(2 * y, src.height - 1), y1 = std::min(2 * y + 1, src.height - 1);
+        const uint32_t y0 = std::min(2 * y, src.height - 1),
+                       y1 = std::min(2 * y + 1, src.height - 1);
         dst.at(x, y) = box4(src.at(x0, y0), src.at(x1, y0), src.at(x0, y1), src.at(x1, y1));
       }
     }
