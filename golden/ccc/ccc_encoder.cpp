@@ -193,6 +193,21 @@ std::vector<Texture> encode_levels(const std::vector<ImageRgb8>& images) {
   return out;
 }
 
+Texture encode_with_clut(const ImageRgb8& image, const Clut& clut) {
+  check_size(image);
+  const Palette palette{clut, static_cast<uint32_t>(clut.size())};
+  const PaletteSearch search(palette);
+  Texture tex;
+  tex.width = static_cast<uint32_t>(image.width);
+  tex.height = static_cast<uint32_t>(image.height);
+  tex.clut = clut;
+  for_each_block(
+      image, [&](uint32_t, uint32_t, const std::array<Rgb8, 16>& texels, const TwoColourBlock& c) {
+        tex.blocks.push_back(quantized_block(c, texels, palette, search));
+      });
+  return tex;
+}
+
 ImageRgb8 two_colour_ideal(const ImageRgb8& image) {
   check_size(image);
   ImageRgb8 out(image.width, image.height);

@@ -38,6 +38,10 @@ Texture encode(const ImageRgb8& image);
 // the cluster colours of all of them: the hardware has a single CLUT per texture.
 std::vector<Texture> encode_levels(const std::vector<ImageRgb8>& images);
 
+// Encodes an image against a given CLUT (e.g. the higher levels of a mipmap whose level 0
+// came in a .ccc file): every entry may be chosen.
+Texture encode_with_clut(const ImageRgb8& image, const Clut& clut);
+
 // The unquantized two-colour reconstruction: every texel takes its cluster mean rounded to
 // the nearest 8-bit value. What encode() would give with an unlimited CLUT.
 ImageRgb8 two_colour_ideal(const ImageRgb8& image);

@@ -3,6 +3,7 @@
 #include <bit>
 #include <stdexcept>
 
+#include "ccc/ccc_decoder.hpp"
 #include "ccc/ccc_encoder.hpp"
 #include "ccc/median_cut.hpp"
 
@@ -114,6 +115,16 @@ TexramTexture texture_from_ccc(const std::vector<ccc::Texture>& levels) {
     }
   }
   return tex;
+}
+
+TexramTexture import_ccc(const ccc::Texture& level0) {
+  log2_side(level0.width, "width");
+  log2_side(level0.height, "height");
+  const auto rgb = rgb_pyramids(ccc::decode_image(level0));
+  std::vector<ccc::Texture> levels{level0};
+  for (size_t l = 1; l < rgb[0].size(); ++l)
+    levels.push_back(ccc::encode_with_clut(level_image(rgb, l), level0.clut));
+  return texture_from_ccc(levels);
 }
 
 std::array<Pyramid8, 3> rgb_pyramids(const ImageRgb8& image) {

@@ -58,6 +58,10 @@ constexpr uint8_t luma(Rgb8 c) {
 // Throws std::invalid_argument naming the reason.
 TexramTexture import_image(const ImageRgb8& image, TexelKind kind, int single_channel = 0);
 
+// A CCC texture from a .ccc file's level 0 (kept as it is); the higher levels are the RGB
+// pyramid of its decoded image, encoded against its CLUT. Throws std::invalid_argument.
+TexramTexture import_ccc(const ccc::Texture& level0);
+
 // The three RGB pyramids of an image (box filter per channel).
 std::array<Pyramid8, 3> rgb_pyramids(const ImageRgb8& image);
 

@@ -14,5 +14,6 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code);
 void add_ccc_command(CLI::App& app, ExitCode& exit_code);
 void add_formats_command(CLI::App& app, ExitCode& exit_code);
 void add_pattern_command(CLI::App& app, ExitCode& exit_code);
+void add_sample_command(CLI::App& app, ExitCode& exit_code);
 
 }  // namespace tmu::texsim
