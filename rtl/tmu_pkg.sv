@@ -80,10 +80,35 @@ package tmu_pkg;
   localparam int unsigned BankAddrFrac = 0;
   typedef logic [BankAddrW-1:0] bank_addr_t;
 
+  // BytePlane: UQ2.0, TEXRAM byte plane 0..3 of a texel: R G B A, or a CCC block word's bytes 31:24 first
+  localparam int unsigned BytePlaneW = 2;
+  localparam int unsigned BytePlaneFrac = 0;
+  typedef logic [BytePlaneW-1:0] byte_plane_t;
+
   // Rgba8888: UQ32.0, packed colour: R 31:24, G 23:16, B 15:8, A 7:0
   localparam int unsigned Rgba8888W = 32;
   localparam int unsigned Rgba8888Frac = 0;
   typedef logic [Rgba8888W-1:0] rgba8888_t;
+
+  // TexKind: UQ3.0, TEXRAM texel configuration: 0 luminance, 1 index, 2 true colour, 3 single, 4 CCC
+  localparam int unsigned TexKindW = 3;
+  localparam int unsigned TexKindFrac = 0;
+  typedef logic [TexKindW-1:0] tex_kind_t;
+
+  // TexFilter: UQ2.0, TEXRAM filter: 0 nearest, 1 bilinear, 2 trilinear
+  localparam int unsigned TexFilterW = 2;
+  localparam int unsigned TexFilterFrac = 0;
+  typedef logic [TexFilterW-1:0] tex_filter_t;
+
+  // TexBorder: UQ2.0, TEXRAM border operator of an axis: 0 wrap, 1 clamp, 2 border colour, 3 mirror
+  localparam int unsigned TexBorderW = 2;
+  localparam int unsigned TexBorderFrac = 0;
+  typedef logic [TexBorderW-1:0] tex_border_t;
+
+  // TexCombine: UQ2.0, eq. 5 selection: 0 one (T unmodified), 1 constant k_T, 2 shade I_d
+  localparam int unsigned TexCombineW = 2;
+  localparam int unsigned TexCombineFrac = 0;
+  typedef logic [TexCombineW-1:0] tex_combine_t;
 
   // StatCount: UQ32.0, statistics counter (wraps)
   localparam int unsigned StatCountW = 32;

@@ -29,7 +29,8 @@ expect() {
   pass "$name"
 }
 
-for cmd in "" "cosim" "ccc" "ccc encode" "ccc decode" "ccc roundtrip" "formats" "pattern"; do
+for cmd in "" "cosim" "ccc" "ccc encode" "ccc decode" "ccc roundtrip" "formats" "pattern" "sample" "mipgen" \
+  "sweep"; do
   # shellcheck disable=SC2086
   expect "help: texsim $cmd" 0 "Usage" -- "$texsim" $cmd --help
 done
@@ -75,6 +76,27 @@ expect "cosim with an injected fault fails" 1 "reproduce: texsim cosim ccc --see
 expect "replay a saved vector file" 0 "MATCH" -- "$texsim" cosim ccc --vectors vec.csv
 printf 'op,block\n0,0x1ffffffff\n' >bad.csv
 expect "bad vector file names line and field" 2 "bad.csv: line 2: block" -- "$texsim" cosim ccc --vectors bad.csv
+
+# The TEXRAM unit: sample request files, mipmap generation.
+"$texsim" pattern smooth tex.png --width 64 --height 32 >/dev/null
+printf 'u,v,lambda,shade\n10.5,3.25,0.5,0xFFFFFFFF\n-40,1000,-1,0x80FF80FF\n5,5,30,0xFFFFFFFF\n' >req.csv
+expect "sample golden checked against ideal" 0 "error against ideal: max" -- \
+  "$texsim" sample --texture tex.png --requests req.csv --out s.csv --check ideal
+[[ $(head -1 s.csv) == "r,g,b,a" && $(wc -l <s.csv) -eq 4 ]] && pass "sample writes r,g,b,a per request" \
+  || fail "sample output"
+printf '1,2\n' >short.csv
+expect "request with too few values names the line" 2 "short.csv: line 1" -- \
+  "$texsim" sample --texture tex.png --requests short.csv --out x.csv
+printf 'u,v,lambda\n1,2,40\n' >far.csv
+expect "lambda beyond the port names the column" 2 "far.csv: line 2: lambda" -- \
+  "$texsim" sample --texture tex.png --requests far.csv --out x.csv
+expect "a texture that is not a power of two" 2 "img.png: size" -- \
+  "$texsim" sample --texture img.png --requests req.csv --out x.csv
+[[ ! -e x.csv ]] && pass "no result file after failed samples" || fail "x.csv written by a failed sample"
+expect "mipgen through rtl, checked against golden" 0 "MATCH" -- \
+  "$texsim" mipgen tex.png levels --engine rtl --check golden
+[[ -s levels/level_0.png && -s levels/level_6.png ]] && pass "mipgen writes every level" || fail "mipgen levels"
+expect "mipgen of a size that is not a power of two" 2 "img.png: size" -- "$texsim" mipgen img.png lv
 
 echo "$failures failure(s)"
 exit $((failures > 0))

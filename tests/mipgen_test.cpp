@@ -76,8 +76,9 @@ TEST(MipgenTest, PyramidOfASingleColumnRepeatsTheColumn) {
 
 TEST(MipgenTest, PyramidOfANonSquareTexture) {
   // 4 x 2 -> 2 x 1 -> 1 x 1; the last step repeats the row.
-  const Pyramid8 p = build_pyramid(make_level(4, 2, {0, 4, 8, 9,  //
-                                                     2, 6, 9, 9}));
+  const Pyramid8 p = build_pyramid(make_level(4, 2,
+                                              {0, 4, 8, 9,  //
+                                               2, 6, 9, 9}));
   ASSERT_EQ(p.size(), 3u);
   EXPECT_EQ(p[1], make_level(2, 1, {3, 9}));  // (12+2)>>2 = 3, (35+2)>>2 = 9
   EXPECT_EQ(p[2], make_level(1, 1, {6}));     // (2*3 + 2*9 + 2)>>2 = 6

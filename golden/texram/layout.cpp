@@ -37,6 +37,12 @@ uint32_t Geometry::stored_width(int level) const { return std::max(grid_width(le
 uint32_t Geometry::stored_height(int level) const { return std::max(grid_height(level), 2u); }
 
 BankCell Geometry::cell(int level, uint32_t x, uint32_t y, int plane) const {
+  if (level < 0 || level >= levels_ || x >= stored_width(level) || y >= stored_height(level) ||
+      plane < 0 || plane >= planes_) {
+    throw std::logic_error("texram::Geometry::cell: level " + std::to_string(level) + " (" +
+                           std::to_string(x) + ", " + std::to_string(y) + ") plane " +
+                           std::to_string(plane) + " is outside the texture");
+  }
   const uint32_t position = level_offset(level) + (y >> 1) * (stored_width(level) / 2) + (x >> 1);
   return {bank_of(level, x, y),
           static_cast<uint32_t>(planes_) * position + static_cast<uint32_t>(plane)};

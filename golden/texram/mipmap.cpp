@@ -14,6 +14,9 @@ Pyramid8 build_pyramid(const Level8& level0) {
       level0.width > max_side || level0.height > max_side) {
     throw std::invalid_argument("build_pyramid: sides must be powers of two up to 1024");
   }
+  if (level0.texels.size() != size_t{level0.width} * level0.height) {
+    throw std::invalid_argument("build_pyramid: texel count does not match the size");
+  }
   Pyramid8 levels{level0};
   while (levels.back().width > 1 || levels.back().height > 1) {
     const Level8& src = levels.back();

@@ -4,18 +4,28 @@
 
 #include "blocks/ccc_bilinear_block.hpp"
 #include "blocks/ccc_decoder_block.hpp"
+#include "blocks/mipgen_block.hpp"
+#include "blocks/trilinear_block.hpp"
 
 namespace tmu::tb {
 
 std::vector<BlockInfo> block_list() {
   return {{"ccc", "CCC decoder (000 §3, Fig. 5): block word + texel address -> RGB888"},
           {"ccc-bilinear",
-           "CCC low-cost unit (000 §4, Figs. 6-7): 4-entry block cache with lookahead + bilinear"}};
+           "CCC low-cost unit (000 §4, Figs. 6-7): 4-entry block cache with lookahead + bilinear"},
+          {"mipgen",
+           "TEXRAM mipmap generator (000 §12, Fig. 14): 2x2 box levels from a texel stream, bank "
+           "writes"},
+          {"trilinear",
+           "TEXRAM trilinear unit (000 §2, §5, §6): 8-bank mipmap, border modes, texel "
+           "configurations, eq. 5"}};
 }
 
 std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& options) {
   if (name == "ccc") return std::make_unique<CccDecoderBlock>(options.seed);
   if (name == "ccc-bilinear") return std::make_unique<CccBilinearBlock>(options);
+  if (name == "mipgen") return std::make_unique<MipgenBlock>(options);
+  if (name == "trilinear") return std::make_unique<TrilinearBlock>(options);
   std::string known;
   for (const BlockInfo& b : block_list()) known += (known.empty() ? "" : ", ") + b.name;
   throw std::invalid_argument("unknown block '" + name + "' (blocks: " + known + ")");

@@ -2,10 +2,12 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "harness/block.hpp"
+#include "texram/sampler_config.hpp"
 
 namespace tmu::tb {
 
@@ -13,6 +15,26 @@ struct BlockOptions {
   uint64_t seed = 1;
   std::string texture;    // ccc-bilinear: a .ccc file instead of a random texture
   bool lookahead = true;  // ccc-bilinear: neighbour prefetch
+  // mipgen: the frame format; -1 draws it from the seed.
+  int mip_log2_w = -1;      // log2 of the width, 0..10
+  int mip_log2_h = -1;      // log2 of the height, 0..10
+  int mip_interlaced = -1;  // 0 or 1
+  // trilinear: the environment is drawn from the seed; each field that is set overrides its
+  // draw (the configuration, the texture's size and content, the unit's widths).
+  std::optional<texram::TexelKind> tri_kind;
+  std::optional<int> tri_single_channel;  // 0 R .. 3 A
+  std::optional<texram::Filter> tri_filter;
+  std::optional<texram::Border> tri_border_u, tri_border_v;
+  std::optional<uint32_t> tri_border_rgba;  // RGBA8888
+  std::optional<texram::Combine> tri_combine;
+  std::optional<uint32_t> tri_constant_rgba;  // k_T, RGBA8888
+  std::optional<int> tri_log2_w, tri_log2_h;  // 0..10
+  // The content: a pattern (gradient, checker, noise, smooth, random bytes), or an image file
+  // (its size; sides powers of two up to 1024).
+  std::string tri_pattern;
+  std::string tri_image;
+  // The unit's widths; the rtl engine is verilated at 8,8,8 only.
+  texram::Widths tri_widths;
 };
 
 struct BlockInfo {

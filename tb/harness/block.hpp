@@ -43,7 +43,8 @@ class Block {
   virtual std::unique_ptr<Engine> engine(const std::string& level) const = 0;
 
   // Every named case, in print order; cover() counts the ones items[index] (which produced
-  // `output`) exercises, looking back at earlier items where a case needs history.
+  // `output`, its first output if it made several) exercises, looking back at earlier items
+  // where a case needs history. It is called once per item that produced output, in order.
   virtual std::vector<std::string> coverage_cases() const = 0;
   virtual void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
                      Coverage& coverage) const = 0;

@@ -58,18 +58,10 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
   res.items = items.size();
   if (!o.vectors_out.empty()) write_vectors(o.vectors_out, block.inputs(), items);
 
-  std::vector<size_t> item_of_output;  // output index -> input item index
-  for (size_t i = 0; i < items.size(); ++i) {
-    if (block.produces_output(items[i])) item_of_output.push_back(i);
-  }
   auto make = [&](const std::string& level) {
     std::unique_ptr<Engine> e = override_engine ? override_engine(level) : nullptr;
     return e ? std::move(e) : block.engine(level);
   };
-
-  fmt::print(log,
-             "cosim {}: seed {}, {} items -> {} transactions; stalls: in-idle {}, out-stall {}\n",
-             block.name(), o.seed, items.size(), item_of_output.size(), o.in_idle, o.out_stall);
 
   RunOptions run_opt;
   run_opt.stalls = {o.seed ^ kStallSeedSalt, o.in_idle, o.out_stall};
@@ -78,6 +70,16 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
   const RunResult golden = make("golden")->run(items, run_opt);
   res.runs["golden"] = golden;
   if (!golden.error.empty()) throw std::runtime_error("golden model failed: " + golden.error);
+  // The input item behind each output: as golden reports it, or one output per producing item.
+  std::vector<size_t> item_of_output = golden.output_items;
+  if (item_of_output.empty()) {
+    for (size_t i = 0; i < items.size(); ++i) {
+      if (block.produces_output(items[i])) item_of_output.push_back(i);
+    }
+  }
+  fmt::print(log,
+             "cosim {}: seed {}, {} items -> {} transactions; stalls: in-idle {}, out-stall {}\n",
+             block.name(), o.seed, items.size(), golden.outputs.size(), o.in_idle, o.out_stall);
   fmt::print(log, "  {:<8} {:>10} outputs  {:>8.3f} s  {:>12}\n", "golden", golden.outputs.size(),
              golden.seconds, rate(golden.outputs.size(), golden.seconds));
   res.transactions = golden.outputs.size();
@@ -157,6 +159,7 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
   // Coverage of the named cases over the stimulus, plus the reference's counters.
   for (const std::string& name : block.coverage_cases()) res.coverage[name] = 0;
   for (size_t k = 0; k < golden.outputs.size() && k < item_of_output.size(); ++k) {
+    if (k > 0 && item_of_output[k] == item_of_output[k - 1]) continue;  // once per item
     block.cover(items, item_of_output[k], golden.outputs[k], res.coverage);
   }
   fmt::print(log, "coverage:\n");

@@ -49,6 +49,8 @@ inline std::optional<uint64_t> counter_value(const Counters& counters, const std
 struct RunResult {
   std::vector<Txn> outputs;             // in the order they left the block
   std::vector<uint64_t> output_cycles;  // clock cycle of each output (0 for untimed golden)
+  std::vector<size_t> output_items;     // input item of each output, where the engine knows it
+                                        // (a golden model whose items make several outputs)
   uint64_t cycles = 0;                  // clock cycles of the run (0 for untimed golden)
   Counters counters;                    // the block's statistics registers at the end
   double seconds = 0.0;                 // wall time of the model alone

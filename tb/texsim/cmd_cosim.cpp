@@ -6,6 +6,7 @@
 #include "blocks/registry.hpp"
 #include "harness/cosim.hpp"
 #include "texsim/commands.hpp"
+#include "texsim/texram_options.hpp"
 
 namespace tmu::texsim {
 
@@ -21,6 +22,10 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
     tb::CosimOptions cosim;
     tb::BlockOptions block_options;
     std::string engines = "hls,rtl";
+    // trilinear overrides of the seed's environment; empty: drawn from the seed
+    std::string config, channel, filter, border_u, border_v, border_colour, combine, constant,
+        widths;
+    std::optional<int> log2_w, log2_h;
   };
   auto args = std::make_shared<Args>();
   cmd->add_option("block", args->block, "Block to co-simulate")->required();
@@ -63,9 +68,45 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
   cmd->add_option("--texture", args->block_options.texture,
                   "ccc-bilinear: texture (.ccc) instead of a random one")
       ->check(CLI::ExistingFile);
+  cmd->add_option("--mip-log2-w", args->block_options.mip_log2_w,
+                  "mipgen: log2 frame width 0..10 (default: from the seed)")
+      ->check(CLI::Range(0, 10));
+  cmd->add_option("--mip-log2-h", args->block_options.mip_log2_h,
+                  "mipgen: log2 frame height 0..10 (default: from the seed)")
+      ->check(CLI::Range(0, 10));
+  cmd->add_option("--mip-interlaced", args->block_options.mip_interlaced,
+                  "mipgen: 0 or 1 (default: from the seed)")
+      ->check(CLI::Range(0, 1));
   cmd->add_flag(
       "--no-lookahead", [args](int64_t) { args->block_options.lookahead = false; },
       "ccc-bilinear: disable the neighbour prefetch");
+  // trilinear: each option given overrides the environment drawn from the seed.
+  auto* tri =
+      cmd->add_option_group("trilinear", "trilinear: override the environment drawn from the seed");
+  tri->add_option("--config", args->config, "luminance | index | rgba | single | ccc")
+      ->check(CLI::IsMember({"luminance", "index", "rgba", "single", "ccc"}));
+  tri->add_option("--channel", args->channel, "single: r | g | b | a")
+      ->check(CLI::IsMember({"r", "g", "b", "a"}));
+  tri->add_option("--filter", args->filter, "nearest | bilinear | trilinear")
+      ->check(CLI::IsMember({"nearest", "bilinear", "trilinear"}));
+  tri->add_option("--border-u", args->border_u, "wrap | clamp | border | mirror");
+  tri->add_option("--border-v", args->border_v, "wrap | clamp | border | mirror");
+  tri->add_option("--border-colour", args->border_colour, "0xRRGGBBAA");
+  tri->add_option("--combine", args->combine, "one | constant | shade")
+      ->check(CLI::IsMember({"one", "constant", "shade"}));
+  tri->add_option("--constant", args->constant, "k_T, 0xRRGGBBAA");
+  tri->add_option("--log2-w", args->log2_w, "log2 of the texture width, 0..10")
+      ->check(CLI::Range(0, 10));
+  tri->add_option("--log2-h", args->log2_h, "log2 of the texture height, 0..10")
+      ->check(CLI::Range(0, 10));
+  tri->add_option("--pattern", args->block_options.tri_pattern,
+                  "texture content: gradient | checker | noise | smooth | random")
+      ->check(CLI::IsMember({"gradient", "checker", "noise", "smooth", "random"}));
+  tri->add_option("--image", args->block_options.tri_image, "texture content: an image file")
+      ->check(CLI::ExistingFile);
+  tri->add_option("--widths", args->widths,
+                  "internal widths S,W,L (hls and golden; rtl is verilated at 8,8,8)");
+
   cmd->callback([args, &exit_code] {
     args->cosim.engines.clear();
     std::stringstream ss(args->engines);
@@ -75,6 +116,21 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
       args->cosim.engines.push_back(e);
     }
     args->block_options.seed = args->cosim.seed;
+    tb::BlockOptions& b = args->block_options;
+    if (!args->config.empty()) b.tri_kind = texram::parse_texel_kind(args->config);
+    if (!args->channel.empty())
+      b.tri_single_channel = static_cast<int>(std::string("rgba").find(args->channel));
+    if (!args->filter.empty()) b.tri_filter = texram::parse_filter(args->filter);
+    if (!args->border_u.empty()) b.tri_border_u = parse_border_option("--border-u", args->border_u);
+    if (!args->border_v.empty()) b.tri_border_v = parse_border_option("--border-v", args->border_v);
+    if (!args->border_colour.empty())
+      b.tri_border_rgba = parse_rgba_option("--border-colour", args->border_colour);
+    if (!args->combine.empty()) b.tri_combine = texram::parse_combine(args->combine);
+    if (!args->constant.empty())
+      b.tri_constant_rgba = parse_rgba_option("--constant", args->constant);
+    if (!args->widths.empty()) b.tri_widths = parse_widths_option("--widths", args->widths);
+    b.tri_log2_w = args->log2_w;
+    b.tri_log2_h = args->log2_h;
     const auto block = tb::make_block(args->block, args->block_options);
     const tb::CosimResult r = tb::run_cosim(*block, args->cosim, std::cout);
     exit_code.value = r.pass ? 0 : 1;

@@ -15,5 +15,7 @@ void add_ccc_command(CLI::App& app, ExitCode& exit_code);
 void add_formats_command(CLI::App& app, ExitCode& exit_code);
 void add_pattern_command(CLI::App& app, ExitCode& exit_code);
 void add_sample_command(CLI::App& app, ExitCode& exit_code);
+void add_mipgen_command(CLI::App& app, ExitCode& exit_code);
+void add_sweep_command(CLI::App& app, ExitCode& exit_code);
 
 }  // namespace tmu::texsim

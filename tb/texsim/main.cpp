@@ -17,7 +17,9 @@ int main(int argc, char** argv) {
   tmu::texsim::ExitCode exit_code;
   tmu::texsim::add_cosim_command(app, exit_code);
   tmu::texsim::add_ccc_command(app, exit_code);
+  tmu::texsim::add_mipgen_command(app, exit_code);
   tmu::texsim::add_sample_command(app, exit_code);
+  tmu::texsim::add_sweep_command(app, exit_code);
   tmu::texsim::add_pattern_command(app, exit_code);
   tmu::texsim::add_formats_command(app, exit_code);
   try {

@@ -9,9 +9,8 @@
 #include "common/image.hpp"
 
 namespace tmu::texsim {
-namespace {
 
-uint32_t parse_rgba(const std::string& option, const std::string& s) {
+uint32_t parse_rgba_option(const std::string& option, const std::string& s) {
   const bool hex = s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
   uint64_t v = 0;
   auto [p, ec] = std::from_chars(s.data() + (hex ? 2 : 0), s.data() + s.size(), v, hex ? 16 : 10);
@@ -21,12 +20,19 @@ uint32_t parse_rgba(const std::string& option, const std::string& s) {
   return static_cast<uint32_t>(v);
 }
 
-texram::Border parse_border(const std::string& option, const std::string& s) {
+texram::Border parse_border_option(const std::string& option, const std::string& s) {
   if (auto b = texram::parse_border(s)) return *b;
   throw InputError(option, "", "'" + s + "' is not a border mode (wrap, clamp, border, mirror)");
 }
 
-}  // namespace
+texram::Widths parse_widths_option(const std::string& option, const std::string& s) {
+  int w[3] = {0, 0, 0};
+  if (std::sscanf(s.c_str(), "%d,%d,%d", &w[0], &w[1], &w[2]) != 3 || w[0] < 1 || w[0] > 8 ||
+      w[1] < 1 || w[1] > 8 || w[2] < 1 || w[2] > 8) {
+    throw InputError(option, "", "'" + s + "' is not three widths 1..8 like 8,8,8");
+  }
+  return {w[0], w[1], w[2]};
+}
 
 void add_texram_options(CLI::App& cmd, TexramOptions& o) {
   cmd.add_option(
@@ -61,17 +67,12 @@ texram::SamplerConfig sampler_config(const TexramOptions& o) {
   c.kind = *texram::parse_texel_kind(o.config);
   c.single_channel = static_cast<int>(std::string("rgba").find(o.channel));
   c.filter = *texram::parse_filter(o.filter);
-  c.border_u = parse_border("--border-u", o.border_u.empty() ? o.border : o.border_u);
-  c.border_v = parse_border("--border-v", o.border_v.empty() ? o.border : o.border_v);
-  c.border_rgba = parse_rgba("--border-colour", o.border_colour);
+  c.border_u = parse_border_option("--border-u", o.border_u.empty() ? o.border : o.border_u);
+  c.border_v = parse_border_option("--border-v", o.border_v.empty() ? o.border : o.border_v);
+  c.border_rgba = parse_rgba_option("--border-colour", o.border_colour);
   c.combine = *texram::parse_combine(o.combine);
-  c.constant_rgba = parse_rgba("--constant", o.constant);
-  int w[3] = {0, 0, 0};
-  if (std::sscanf(o.widths.c_str(), "%d,%d,%d", &w[0], &w[1], &w[2]) != 3 || w[0] < 1 || w[0] > 8 ||
-      w[1] < 1 || w[1] > 8 || w[2] < 1 || w[2] > 8) {
-    throw InputError("--widths", "", "'" + o.widths + "' is not three widths 1..8 like 8,8,8");
-  }
-  c.widths = {w[0], w[1], w[2]};
+  c.constant_rgba = parse_rgba_option("--constant", o.constant);
+  c.widths = parse_widths_option("--widths", o.widths);
   return c;
 }
 

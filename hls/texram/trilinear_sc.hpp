@@ -1,0 +1,198 @@
+// SystemC model of the TEXRAM trilinear unit (000 §2, §5, §6), the same ports and handshakes
+// as rtl/texram/tmu_trilinear.sv. Its datapath is the golden model's (golden/texram/
+// trilinear.hpp: plan_sample for the levels, weights, border operators, taps and bank access;
+// tap_colour, blend_taps and combine for the colour); the module adds the clocking: one
+// clocked thread that, while idle, takes a CLUT write or a request; for a request it makes
+// the sample's accesses one after the other (one per byte plane, plane p at address + p,
+// each request held until the memory takes it, then its response awaited), and loads the
+// result into a one-entry output register. A sample with nothing to read makes no access.
+//
+// It is sequential (several cycles per sample, one access in flight); only the transactions
+// and the memory accesses match the RTL, not its timing.
+//
+// The configuration (cfg_*) is quasi-static: it is read when a request is accepted. The
+// internal widths (texram::Widths) are constructor arguments, as the RTL's parameters.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <systemc>
+
+#include "formats/formats.hpp"
+#include "texram/layout.hpp"
+#include "texram/trilinear.hpp"
+
+namespace tmu::hls {
+
+namespace fmts = tmu::formats;
+
+class TrilinearSc : public sc_core::sc_module {
+ public:
+  template <int W>
+  using uint_t = sc_dt::sc_uint<W>;
+  template <int W>
+  using int_t = sc_dt::sc_int<W>;
+  static constexpr int kBanks = fmts::kBanks;
+  static constexpr int kAddrWidth = fmts::kBankAddr.width();
+  static constexpr int kAddrBusWidth = kBanks * kAddrWidth;
+  static constexpr int kDataWidth = kBanks * 8;
+
+  sc_core::sc_in<bool> clk_i{"clk_i"};
+  sc_core::sc_in<bool> rst_ni{"rst_ni"};
+
+  sc_core::sc_in<uint_t<fmts::kMipLog2.width()>> cfg_log2_w_i{"cfg_log2_w_i"};
+  sc_core::sc_in<uint_t<fmts::kMipLog2.width()>> cfg_log2_h_i{"cfg_log2_h_i"};
+  sc_core::sc_in<uint_t<fmts::kTexKind.width()>> cfg_kind_i{"cfg_kind_i"};
+  sc_core::sc_in<uint_t<fmts::kBytePlane.width()>> cfg_single_channel_i{"cfg_single_channel_i"};
+  sc_core::sc_in<uint_t<fmts::kTexFilter.width()>> cfg_filter_i{"cfg_filter_i"};
+  sc_core::sc_in<uint_t<fmts::kTexBorder.width()>> cfg_border_u_i{"cfg_border_u_i"};
+  sc_core::sc_in<uint_t<fmts::kTexBorder.width()>> cfg_border_v_i{"cfg_border_v_i"};
+  sc_core::sc_in<uint_t<fmts::kRgba8888.width()>> cfg_border_rgba_i{"cfg_border_rgba_i"};
+  sc_core::sc_in<uint_t<fmts::kTexCombine.width()>> cfg_combine_i{"cfg_combine_i"};
+  sc_core::sc_in<uint_t<fmts::kRgba8888.width()>> cfg_constant_rgba_i{"cfg_constant_rgba_i"};
+
+  sc_core::sc_in<bool> clut_valid_i{"clut_valid_i"};
+  sc_core::sc_out<bool> clut_ready_o{"clut_ready_o"};
+  sc_core::sc_in<uint_t<fmts::kClutIndex.width()>> clut_addr_i{"clut_addr_i"};
+  sc_core::sc_in<uint_t<fmts::kRgba8888.width()>> clut_rgba_i{"clut_rgba_i"};
+
+  sc_core::sc_in<bool> req_valid_i{"req_valid_i"};
+  sc_core::sc_out<bool> req_ready_o{"req_ready_o"};
+  sc_core::sc_in<int_t<fmts::kTexCoord.width()>> req_u_i{"req_u_i"};
+  sc_core::sc_in<int_t<fmts::kTexCoord.width()>> req_v_i{"req_v_i"};
+  sc_core::sc_in<int_t<fmts::kLod.width()>> req_lambda_i{"req_lambda_i"};
+  sc_core::sc_in<uint_t<fmts::kRgba8888.width()>> req_shade_i{"req_shade_i"};
+
+  sc_core::sc_out<bool> mem_req_valid_o{"mem_req_valid_o"};
+  sc_core::sc_in<bool> mem_req_ready_i{"mem_req_ready_i"};
+  sc_core::sc_out<uint_t<kBanks>> mem_req_en_o{"mem_req_en_o"};
+  sc_core::sc_out<sc_dt::sc_biguint<kAddrBusWidth>> mem_req_addr_o{"mem_req_addr_o"};
+  sc_core::sc_in<bool> mem_resp_valid_i{"mem_resp_valid_i"};
+  sc_core::sc_in<uint_t<kDataWidth>> mem_resp_data_i{"mem_resp_data_i"};
+
+  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
+  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
+  sc_core::sc_out<uint_t<fmts::kRgba8888.width()>> out_rgba_o{"out_rgba_o"};
+
+  SC_HAS_PROCESS(TrilinearSc);
+  TrilinearSc(sc_core::sc_module_name name, const texram::Widths& widths = {})
+      : sc_core::sc_module(name), widths_(widths) {
+    SC_CTHREAD(run, clk_i.pos());
+    reset_signal_is(rst_ni, false);
+  }
+
+ private:
+  void run() {
+    // Reset. Not ready: a ready port promises the next edge takes the input, and the edge
+    // that leaves reset is spent here.
+    clut_ready_o.write(false);
+    req_ready_o.write(false);
+    mem_req_valid_o.write(false);
+    mem_req_en_o.write(0);
+    mem_req_addr_o.write(0);
+    out_valid_o.write(false);
+    out_rgba_o.write(0);
+    out_full_ = false;
+    out_rgba_ = 0;
+    wait();
+    while (true) {
+      // Idle: a CLUT write or a request (or both: the write is then ordered first).
+      clut_ready_o.write(true);
+      req_ready_o.write(true);
+      step();
+      clut_ready_o.write(false);
+      req_ready_o.write(false);
+      if (clut_valid_i.read()) {
+        clut_[static_cast<uint8_t>(clut_addr_i.read())] = static_cast<uint32_t>(clut_rgba_i.read());
+      }
+      if (req_valid_i.read()) {
+        serve({static_cast<int32_t>(req_u_i.read().to_int()),
+               static_cast<int32_t>(req_v_i.read().to_int()),
+               static_cast<int32_t>(req_lambda_i.read().to_int()),
+               static_cast<uint32_t>(req_shade_i.read())});
+      }
+    }
+  }
+
+  // One clock: present the output register, wait for the edge, and retire the output if it
+  // was taken. Reads after it see the inputs from before the edge.
+  void step() {
+    out_valid_o.write(out_full_);
+    out_rgba_o.write(out_rgba_);
+    wait();
+    if (out_full_ && out_ready_i.read()) out_full_ = false;
+  }
+
+  texram::SamplerConfig config() const {
+    texram::SamplerConfig c;
+    c.kind = static_cast<texram::TexelKind>(cfg_kind_i.read().to_uint());
+    c.single_channel = static_cast<int>(cfg_single_channel_i.read().to_uint());
+    c.filter = static_cast<texram::Filter>(cfg_filter_i.read().to_uint());
+    c.border_u = static_cast<texram::Border>(cfg_border_u_i.read().to_uint());
+    c.border_v = static_cast<texram::Border>(cfg_border_v_i.read().to_uint());
+    c.border_rgba = static_cast<uint32_t>(cfg_border_rgba_i.read());
+    c.combine = static_cast<texram::Combine>(cfg_combine_i.read().to_uint());
+    c.constant_rgba = static_cast<uint32_t>(cfg_constant_rgba_i.read());
+    c.widths = widths_;
+    return c;
+  }
+
+  // One access of the eight banks: request (held until taken), then its response.
+  void access(const texram::SamplePlan& plan, int plane, texram::AccessData& data) {
+    uint_t<kBanks> en = 0;
+    sc_dt::sc_biguint<kAddrBusWidth> addr = 0;
+    for (int b = 0; b < kBanks; ++b) {
+      const auto& a = plan.bank_address[static_cast<size_t>(b)];
+      if (!a) continue;
+      en[b] = 1;
+      addr.range((b + 1) * kAddrWidth - 1, b * kAddrWidth) = *a + static_cast<uint32_t>(plane);
+    }
+    mem_req_en_o.write(en);
+    mem_req_addr_o.write(addr);
+    mem_req_valid_o.write(true);
+    do {
+      step();
+    } while (!mem_req_ready_i.read());
+    mem_req_valid_o.write(false);
+    do {
+      step();
+    } while (!mem_resp_valid_i.read());
+    const uint64_t bytes = mem_resp_data_i.read().to_uint64();
+    for (size_t b = 0; b < kBanks; ++b) {
+      data[b][static_cast<size_t>(plane)] = static_cast<uint8_t>(bytes >> (8 * b));
+    }
+  }
+
+  void serve(const texram::Request& request) {
+    const texram::SamplerConfig c = config();
+    const bool four = c.kind == texram::TexelKind::kTrueColour || c.kind == texram::TexelKind::kCcc;
+    const texram::Geometry g(static_cast<int>(cfg_log2_w_i.read().to_uint()),
+                             static_cast<int>(cfg_log2_h_i.read().to_uint()),
+                             four ? fmts::kPlanes : 1, c.kind == texram::TexelKind::kCcc);
+    const texram::SamplePlan plan = texram::plan_sample(g, c, request);
+    texram::AccessData data{};
+    bool reads = false;
+    for (const auto& a : plan.bank_address) reads = reads || a.has_value();
+    if (reads) {
+      for (int p = 0; p < plan.planes; ++p) access(plan, p, data);
+    }
+    std::array<std::array<uint32_t, 4>, 2> colours{};
+    for (size_t j = 0; j < static_cast<size_t>(plan.levels_read); ++j) {
+      for (size_t k = 0; k < static_cast<size_t>(plan.taps_per_level); ++k) {
+        colours[j][k] = texram::tap_colour(plan.taps[j][k], data, c.kind, c, clut_);
+      }
+    }
+    const uint32_t rgba =
+        texram::combine(texram::blend_taps(plan, colours, c.widths), c, request.shade);
+    while (out_full_) step();
+    out_full_ = true;
+    out_rgba_ = rgba;
+  }
+
+  texram::Widths widths_;
+  texram::Clut32 clut_{};  // a RAM: no reset
+  bool out_full_ = false;
+  uint32_t out_rgba_ = 0;
+};
+
+}  // namespace tmu::hls

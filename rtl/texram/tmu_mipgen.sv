@@ -1,0 +1,317 @@
+/// Real-time mipmap generator of the TEXRAM (000 §12, Fig. 14): level-0 texels stream in, the
+/// 2 x 2 box levels up to 1 x 1 are computed on the fly and every texel of every level leaves
+/// as a write of one 8-bit bank cell. Bit-exact with the golden texram::MipgenStream
+/// (golden/texram/mipgen_stream.hpp), which defines the input order, the output order and
+/// the arithmetic; its values are build_pyramid's and its cells Geometry::cell's.
+///
+/// Input: one item per level-0 texel in source order: raster order, or interlaced, field 1
+/// (lines 0, 2, ...) then field 2 (lines 1, 3, ...). A field-2 item carries in_above_i, the
+/// level-0 texel above it (the chip reads that line back from its banks into the shift
+/// registers 826); elsewhere in_above_i is ignored. A one-line frame is never interlaced.
+/// After a frame's last texel the next item starts a new frame of the same format.
+///
+/// Output, per input item: its level-0 write(s), then each higher-level texel the item
+/// completes, ascending level. A texel of a level less than 2 texels wide (high) is written
+/// to each of its replica cells, row-major in stored coordinates. One write per clock.
+///
+/// Datapath, one texel at a time (the texel being written, lvl_q/x_q/y_q/val_q): with its last
+/// write the texel enters the stage of its level, which either keeps a partial sum or
+/// completes a texel of the next level; that texel is then written the same way, and so on.
+/// Stage l (level l in, level l + 1 out) has
+///   - hold_q[l]: register 1404, an even column waiting for its odd neighbour (interlaced
+///     level 0: FIFO 1408 as a one-entry register holding texel + above);
+///   - a line FIFO (tmu_mip_line_fifo) of 2^(MaxLog2-1-l) pair sums, half a line of level l
+///     (FIFO 1408 as a line buffer): the even line's pair sums wait for the odd line below.
+/// Sums are exact (pair sums 9 bits, box sums 10 bits) and rounded once, (sum + 2) >> 2. A
+/// one-texel-wide (-high) level repeats its column (row): the pair is twice the texel.
+///
+/// Timing: an input is accepted while the generator is idle, or in the cycle its last
+/// pending write leaves (so in_ready_o depends on wr_ready_i); a texel's writes leave one per
+/// clock; completing a texel of the next level costs no extra cycle. So an item takes as
+/// many cycles as it makes writes: one for most items, 4/3 on average for a square texture
+/// (more for the replicas of one-texel-wide levels), the frame's last item one per level.
+///
+/// Configuration (cfg_*) is quasi-static: hold it from before reset for the whole run.
+///
+/// Example: 2 x 2 texels a b / c d, not interlaced, one plane. a: write (level 0, x 0, y 0),
+/// a waits in hold_q[0]; b: write (0, 1, 0), the pair a + b waits in the level-0 line FIFO;
+/// c: write (0, 0, 1), c waits in hold_q[0]; d: write (0, 1, 1), then c + d plus the FIFO's
+/// a + b is the box sum and the level-1 texel (a + b + c + d + 2) >> 2 goes to its four
+/// replica cells (1, 0, 0), (1, 1, 0), (1, 0, 1), (1, 1, 1): 8 writes in 8 cycles.
+module tmu_mipgen #(
+  /// Largest texture side 2^MaxLog2 the line FIFOs are sized for (1..MaxMipLog2).
+  parameter int unsigned MaxLog2 = tmu_pkg::MaxMipLog2
+) (
+  input  logic                 clk_i,
+  input  logic                 rst_ni,
+
+  /// Frame format: log2 of the level-0 width and height (0..MaxLog2), interlaced source.
+  input  tmu_pkg::mip_log2_t   cfg_log2_w_i,
+  input  tmu_pkg::mip_log2_t   cfg_log2_h_i,
+  input  logic                 cfg_interlaced_i,
+  /// Addresses: the texture has four byte planes (else one); the plane this stream fills.
+  input  logic                 cfg_four_planes_i,
+  input  tmu_pkg::byte_plane_t cfg_plane_i,
+
+  /// Level-0 texels in source order; in_above_i: the texel above (interlaced field 2).
+  input  logic                 in_valid_i,
+  output logic                 in_ready_o,
+  input  tmu_pkg::channel_t    in_texel_i,
+  input  tmu_pkg::channel_t    in_above_i,
+
+  /// Cell writes: texel (wr_x_o, wr_y_o) (stored coordinates) of level wr_level_o, and its
+  /// bank and address (tmu_bank_address).
+  output logic                 wr_valid_o,
+  input  logic                 wr_ready_i,
+  output tmu_pkg::mip_level_t  wr_level_o,
+  output tmu_pkg::mip_coord_t  wr_x_o,
+  output tmu_pkg::mip_coord_t  wr_y_o,
+  output tmu_pkg::channel_t    wr_value_o,
+  output tmu_pkg::bank_t       wr_bank_o,
+  output tmu_pkg::bank_addr_t  wr_addr_o
+);
+
+  localparam int unsigned ChW    = tmu_pkg::ChannelW;
+  localparam int unsigned PairW  = ChW + 1;  // a sum of two texels, 0..510
+  localparam int unsigned SumW   = ChW + 2;  // a box sum, 0..1020
+  localparam int unsigned CoordW = tmu_pkg::MipCoordW;
+  localparam int unsigned LevelW = tmu_pkg::MipLevelW;
+  localparam int unsigned Stages = MaxLog2;  // stage l: level l in, level l + 1 out
+  localparam int unsigned StageW = (Stages > 1) ? $clog2(Stages) : 1;
+
+  if (MaxLog2 < 1 || MaxLog2 > tmu_pkg::MaxMipLog2 || CoordW < MaxLog2 ||
+      (1 << LevelW) <= MaxLog2) begin : gen_check
+    $error("tmu_mipgen: MaxLog2 must be 1..MaxMipLog2");
+  end
+
+  // ---- Source position: the level-0 texel of the next input item ------------------------------
+
+  logic [CoordW:0]     width, height;  // 2^log2
+  logic                interlaced;     // fields in effect: interlaced and more than one line
+  tmu_pkg::mip_coord_t src_x_q, src_x_d, src_y_q, src_y_d;
+  logic [CoordW:0]     src_y_step;
+
+  assign width      = (CoordW + 1)'(1) << cfg_log2_w_i;
+  assign height     = (CoordW + 1)'(1) << cfg_log2_h_i;
+  assign interlaced = cfg_interlaced_i && cfg_log2_h_i != '0;
+
+  // ---- The texel being written ---------------------------------------------------------------
+
+  logic                busy_q, busy_d;
+  tmu_pkg::mip_level_t lvl_q, lvl_d;
+  tmu_pkg::mip_coord_t x_q, x_d, y_q, y_d;  // coordinates within its level
+  tmu_pkg::channel_t   val_q, val_d;
+  tmu_pkg::channel_t   above_q, above_d;    // level 0, interlaced field 2: the texel above
+  logic [1:0]          rep_q, rep_d;        // replica being written: {y, x}
+
+  logic wide, high, top;  // the texel's level is >= 2 wide, >= 2 high, the 1 x 1 top
+  logic rep_last;         // the texel's last write
+
+  assign wide     = cfg_log2_w_i > lvl_q;
+  assign high     = cfg_log2_h_i > lvl_q;
+  assign top      = !wide && !high;
+  assign rep_last = (wide || rep_q[0]) && (high || rep_q[1]);
+
+  // ---- Stage of the texel's level: partial sums, and the next level's texel ------------------
+
+  logic [PairW-1:0]        hold_q [Stages];     // register 1404 of each stage
+  logic [Stages*PairW-1:0] line_rdata;          // each stage's line FIFO, at column pair x_q >> 1
+  logic [StageW-1:0]       stage;
+  logic [PairW-1:0]        hold_rd, line_rd, hold_wd, pair;
+  logic [SumW-1:0]         sum;
+  logic [SumW-1:0]         sum_rounded;   // at most 1020 + 2: no carry out
+  logic                    unused_round_bits;
+  logic                    hold_we, line_we, produce;
+
+  assign stage   = top ? '0 : StageW'(lvl_q);  // a level below the top has a stage
+  assign hold_rd = hold_q[stage];
+  assign line_rd = line_rdata[stage*PairW +: PairW];
+
+  always_comb begin
+    pair    = '0;
+    hold_wd = '0;
+    sum     = '0;
+    hold_we = 1'b0;
+    line_we = 1'b0;
+    produce = 1'b0;
+    if (!top) begin
+      if (interlaced && lvl_q == '0) begin
+        // Fig. 14(a), interlaced: field 2 adds the texel above (adder 1402); an even column
+        // waits in FIFO 1408 (one entry), the odd one completes the level-1 texel (1410).
+        pair = PairW'(val_q) + PairW'(above_q);
+        if (y_q[0]) begin
+          if (!wide) begin
+            produce = 1'b1;
+            sum     = {pair, 1'b0};
+          end else if (!x_q[0]) begin
+            hold_we = 1'b1;
+            hold_wd = pair;
+          end else begin
+            produce = 1'b1;
+            sum     = SumW'(hold_rd) + SumW'(pair);
+          end
+        end
+      end else begin
+        // Columns pair first (register 1404, adder 1402), then lines (line FIFO 1408, 1410).
+        if (wide && !x_q[0]) begin
+          hold_we = 1'b1;
+          hold_wd = PairW'(val_q);
+        end else begin
+          pair = wide ? PairW'(hold_rd[ChW-1:0]) + PairW'(val_q) : {val_q, 1'b0};
+          if (!high) begin
+            produce = 1'b1;
+            sum     = {pair, 1'b0};
+          end else if (!y_q[0]) begin
+            line_we = 1'b1;
+          end else begin
+            produce = 1'b1;
+            sum     = SumW'(line_rd) + SumW'(pair);
+          end
+        end
+      end
+    end
+  end
+
+  // The box4 rule: the exact sum plus half of 4, the two low bits dropped.
+  assign sum_rounded       = sum + SumW'(2);
+  assign unused_round_bits = ^sum_rounded[1:0];
+
+  // ---- Control ---------------------------------------------------------------------------------
+
+  logic wr_fire, done, in_fire;
+
+  assign wr_fire    = busy_q && wr_ready_i;
+  assign done       = wr_fire && rep_last;  // the texel enters its stage
+  assign in_ready_o = !busy_q || (done && !produce);
+  assign in_fire    = in_valid_i && in_ready_o;
+
+  always_comb begin
+    busy_d     = busy_q;
+    lvl_d      = lvl_q;
+    x_d        = x_q;
+    y_d        = y_q;
+    val_d      = val_q;
+    above_d    = above_q;
+    rep_d      = rep_q;
+    src_x_d    = src_x_q;
+    src_y_d    = src_y_q;
+    src_y_step = '0;
+
+    if (wr_fire && !rep_last) begin  // next replica, row-major
+      rep_d = (!wide && !rep_q[0]) ? {rep_q[1], 1'b1} : 2'b10;
+    end
+    if (done) begin
+      if (produce) begin  // the next level's texel, written next
+        lvl_d = lvl_q + LevelW'(1);
+        x_d   = x_q >> 1;
+        y_d   = y_q >> 1;
+        val_d = sum_rounded[SumW-1:2];
+        rep_d = '0;
+      end else begin
+        busy_d = 1'b0;
+      end
+    end
+    if (in_fire) begin
+      busy_d  = 1'b1;
+      lvl_d   = '0;
+      x_d     = src_x_q;
+      y_d     = src_y_q;
+      val_d   = in_texel_i;
+      above_d = in_above_i;
+      rep_d   = '0;
+      // Source order: along the line; then the next line, or of the same field; a field's
+      // end goes to field 2 (line 1), a frame's end to line 0.
+      if ((CoordW + 1)'(src_x_q) + (CoordW + 1)'(1) == width) begin
+        src_x_d    = '0;
+        src_y_step = (CoordW + 1)'(src_y_q) + (interlaced ? (CoordW + 1)'(2) : (CoordW + 1)'(1));
+        if (src_y_step >= height) begin
+          src_y_d = (interlaced && !src_y_q[0]) ? CoordW'(1) : '0;
+        end else begin
+          src_y_d = src_y_step[CoordW-1:0];
+        end
+      end else begin
+        src_x_d = src_x_q + CoordW'(1);
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      busy_q  <= 1'b0;
+      src_x_q <= '0;
+      src_y_q <= '0;
+    end else begin
+      busy_q  <= busy_d;
+      src_x_q <= src_x_d;
+      src_y_q <= src_y_d;
+    end
+  end
+
+  // The texel's data: only observed while busy_q, no reset.
+  always_ff @(posedge clk_i) begin
+    lvl_q   <= lvl_d;
+    x_q     <= x_d;
+    y_q     <= y_d;
+    val_q   <= val_d;
+    above_q <= above_d;
+    rep_q   <= rep_d;
+  end
+
+  // Registers 1404: no reset, every frame writes an even column before its odd one reads it.
+  always_ff @(posedge clk_i) begin
+    if (done && hold_we) hold_q[stage] <= hold_wd;
+  end
+
+  for (genvar l = 0; l < Stages; l++) begin : gen_stage
+    localparam int unsigned Depth = 1 << (MaxLog2 - 1 - l);  // half a line of level l
+    localparam int unsigned FifoAddrW = (Depth > 1) ? $clog2(Depth) : 1;
+    tmu_mip_line_fifo #(
+      .Depth (Depth),
+      .Width (PairW)
+    ) u_line_fifo (
+      .clk_i   (clk_i),
+      .we_i    (done && line_we && stage == StageW'(l)),
+      .addr_i  (x_q[FifoAddrW:1]),
+      .wdata_i (pair),
+      .rdata_o (line_rdata[l*PairW +: PairW])
+    );
+  end
+
+  // ---- Writes --------------------------------------------------------------------------------
+
+  assign wr_valid_o = busy_q;
+  assign wr_level_o = lvl_q;
+  assign wr_x_o     = wide ? x_q : CoordW'(rep_q[0]);
+  assign wr_y_o     = high ? y_q : CoordW'(rep_q[1]);
+  assign wr_value_o = val_q;
+
+  tmu_bank_address #(
+    .MaxLog2 (MaxLog2)
+  ) u_bank_address (
+    .cfg_log2_w_i      (cfg_log2_w_i),
+    .cfg_log2_h_i      (cfg_log2_h_i),
+    .cfg_four_planes_i (cfg_four_planes_i),
+    .cfg_block_grid_i  (1'b0),
+    .level_i           (lvl_q),
+    .x_i               (wr_x_o),
+    .y_i               (wr_y_o),
+    .plane_i           (cfg_plane_i),
+    .bank_o            (wr_bank_o),
+    .addr_o            (wr_addr_o)
+  );
+
+  // Assertions run under Verilator (--assert); Yosys 0.23 cannot parse concurrent assertions
+  // and defines SYNTHESIS.
+`ifndef SYNTHESIS
+  // A stalled write holds still until it is taken.
+  a_write_stable: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (wr_valid_o && !wr_ready_i) |=> wr_valid_o &&
+      $stable({wr_level_o, wr_x_o, wr_y_o, wr_value_o, wr_bank_o, wr_addr_o}));
+  // The format fits the FIFOs, and no texel climbs above the top level.
+  a_cfg_in_range: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      32'(cfg_log2_w_i) <= MaxLog2 && 32'(cfg_log2_h_i) <= MaxLog2);
+  a_level_in_range: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      busy_q |-> (lvl_q <= cfg_log2_w_i || lvl_q <= cfg_log2_h_i));
+`endif
+
+endmodule

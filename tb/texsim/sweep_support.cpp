@@ -1,0 +1,70 @@
+#include "texsim/sweep_support.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <sstream>
+
+#include "common/atomic_file.hpp"
+
+namespace tmu::texsim {
+namespace {
+
+std::vector<size_t> widths_of(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
+  std::vector<size_t> w;
+  for (const auto& h : header) w.push_back(h.size());
+  for (const auto& r : rows) {
+    for (size_t i = 0; i < r.size() && i < w.size(); ++i) w[i] = std::max(w[i], r[i].size());
+  }
+  return w;
+}
+
+std::string line_of(const std::vector<std::string>& cells, const std::vector<size_t>& w) {
+  std::string out;
+  for (size_t i = 0; i < cells.size(); ++i) out += fmt::format("{:>{}}  ", cells[i], w[i]);
+  return out;
+}
+
+}  // namespace
+
+std::string SweepTable::last_row_text() const {
+  return rows_.empty() ? "" : line_of(rows_.back(), widths_of(header_, rows_));
+}
+
+void SweepTable::print(const std::string& markdown_path) const {
+  const auto w = widths_of(header_, rows_);
+  fmt::print("\n{}\n", line_of(header_, w));
+  for (const auto& r : rows_) fmt::print("{}\n", line_of(r, w));
+  if (markdown_path.empty()) return;
+  std::string md = "| " + fmt::format("{}", fmt::join(header_, " | ")) + " |\n|";
+  for (size_t i = 0; i < header_.size(); ++i) md += "---|";
+  md += "\n";
+  for (const auto& r : rows_) md += "| " + fmt::format("{}", fmt::join(r, " | ")) + " |\n";
+  write_file_atomically(markdown_path, md);
+  fmt::print("wrote {}\n", markdown_path);
+}
+
+SynthFigures synthesize(const std::string& top, const std::vector<std::pair<std::string, int>>& params) {
+  std::string cmd = std::string(TMU_SOURCE_DIR) + "/scripts/synth.sh";
+  for (const auto& [name, value] : params) cmd += fmt::format(" -G {}={}", name, value);
+  cmd += " " + top + " 2>&1";
+  SynthFigures f{"?", "?", "?"};
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (!pipe) return f;
+  std::array<char, 512> buf{};
+  while (std::fgets(buf.data(), buf.size(), pipe)) {
+    std::istringstream line(buf.data());
+    std::string name, cells, flops, logic, mem, depth;
+    if (line >> name >> cells >> flops >> logic >> mem >> depth && name == top) f = {cells, logic, depth};
+  }
+  ::pclose(pipe);
+  return f;
+}
+
+std::string RtlSpeed::text() const {
+  return samples_per_second > 0 ? fmt::format("{:.2f}", samples_per_second / 1e6) : "-";
+}
+
+}  // namespace tmu::texsim
