@@ -84,6 +84,8 @@ expect "sample golden checked against ideal" 0 "error against ideal: max" -- \
   "$texsim" sample --texture tex.png --requests req.csv --out s.csv --check ideal
 [[ $(head -1 s.csv) == "r,g,b,a" && $(wc -l <s.csv) -eq 4 ]] && pass "sample writes r,g,b,a per request" \
   || fail "sample output"
+expect "sample through rtl, checked bit for bit against golden" 0 "MATCH: rtl = golden, all 3 results" -- \
+  "$texsim" sample --texture tex.png --requests req.csv --out s_rtl.csv --engine rtl --check golden --config index
 printf '1,2\n' >short.csv
 expect "request with too few values names the line" 2 "short.csv: line 1" -- \
   "$texsim" sample --texture tex.png --requests short.csv --out x.csv
