@@ -32,15 +32,18 @@ using texram::Widths;
 struct ViewResult {
   double psnr = 0;
   ImageRgb8 golden, ideal;
+  ImageRgb8 error;  // |golden - ideal|, largest channel, times 16: where the widths cost
   double golden_seconds = 0;
   size_t samples = 0;
 };
 
 ViewResult render_view(const TexramTexture& tex, const SamplerConfig& config, int w, int h) {
-  const auto view = texram::floor_view(w, h, tex.geometry.texel_width(0), tex.geometry.texel_height(0));
+  const auto view =
+      texram::floor_view(w, h, tex.geometry.texel_width(0), tex.geometry.texel_height(0));
   ViewResult r;
   r.golden = ImageRgb8(w, h);
   r.ideal = ImageRgb8(w, h);
+  r.error = ImageRgb8(w, h);
   std::vector<texram::Request> requests;
   for (const auto& v : view) {
     requests.push_back({static_cast<int32_t>(formats::TexCoord::from_double(v.u).raw()),
@@ -57,13 +60,18 @@ ViewResult render_view(const TexramTexture& tex, const SamplerConfig& config, in
     const auto ideal = texram::ideal_sample(tex, config, view[i].u, view[i].v, view[i].lambda);
     Rgb8& g = r.golden.at(view[i].x, view[i].y);
     Rgb8& d = r.ideal.at(view[i].x, view[i].y);
-    g = {static_cast<uint8_t>(out[i] >> 24), static_cast<uint8_t>(out[i] >> 16), static_cast<uint8_t>(out[i] >> 8)};
+    g = {static_cast<uint8_t>(out[i] >> 24), static_cast<uint8_t>(out[i] >> 16),
+         static_cast<uint8_t>(out[i] >> 8)};
     d = {static_cast<uint8_t>(std::lround(ideal[0])), static_cast<uint8_t>(std::lround(ideal[1])),
          static_cast<uint8_t>(std::lround(ideal[2]))};
+    double worst = 0;
     for (int c = 0; c < 3; ++c) {
       const double e = texram::channel(out[i], c) - ideal[static_cast<size_t>(c)];
       se += e * e;
+      worst = std::max(worst, std::abs(e));
     }
+    const auto shown = static_cast<uint8_t>(std::min(255.0, 16.0 * worst));
+    r.error.at(view[i].x, view[i].y) = {shown, shown, shown};
   }
   const double mse = se / (3.0 * static_cast<double>(view.size()));
   r.psnr = mse > 0 ? 10 * std::log10(255.0 * 255.0 / mse) : INFINITY;
@@ -71,15 +79,19 @@ ViewResult render_view(const TexramTexture& tex, const SamplerConfig& config, in
 }
 
 // Random requests on the port grid over every level: max and mean absolute error.
-std::pair<double, double> random_error(const TexramTexture& tex, const SamplerConfig& config, int count) {
+std::pair<double, double> random_error(const TexramTexture& tex, const SamplerConfig& config,
+                                       int count) {
   std::mt19937 rng(7);
-  const int w = static_cast<int>(tex.geometry.texel_width(0)), h = static_cast<int>(tex.geometry.texel_height(0));
+  const int w = static_cast<int>(tex.geometry.texel_width(0)),
+            h = static_cast<int>(tex.geometry.texel_height(0));
   double max_err = 0, sum = 0;
   for (int i = 0; i < count; ++i) {
-    const texram::Request r{static_cast<int32_t>(rng() % (w * 256)), static_cast<int32_t>(rng() % (h * 256)),
+    const texram::Request r{static_cast<int32_t>(rng() % (w * 256)),
+                            static_cast<int32_t>(rng() % (h * 256)),
                             static_cast<int32_t>(rng() % (tex.geometry.levels() * 256)), 0};
     const uint32_t g = texram::sample(tex, config, r);
-    const auto ideal = texram::ideal_sample(tex, config, r.u / 256.0, r.v / 256.0, r.lambda / 256.0);
+    const auto ideal =
+        texram::ideal_sample(tex, config, r.u / 256.0, r.v / 256.0, r.lambda / 256.0);
     for (int c = 0; c < 4; ++c) {
       const double e = std::abs(texram::channel(g, c) - ideal[static_cast<size_t>(c)]);
       max_err = std::max(max_err, e);
@@ -94,8 +106,9 @@ std::vector<Widths> parse_settings(const std::string& text) {
   std::stringstream ss(text);
   for (std::string item; std::getline(ss, item, ';');) {
     Widths w;
-    if (std::sscanf(item.c_str(), "%d,%d,%d", &w.sub_texel, &w.weight, &w.lod_frac) != 3 || w.sub_texel < 1 ||
-        w.sub_texel > 8 || w.weight < 1 || w.weight > 8 || w.lod_frac < 1 || w.lod_frac > 8) {
+    if (std::sscanf(item.c_str(), "%d,%d,%d", &w.sub_texel, &w.weight, &w.lod_frac) != 3 ||
+        w.sub_texel < 1 || w.sub_texel > 8 || w.weight < 1 || w.weight > 8 || w.lod_frac < 1 ||
+        w.lod_frac > 8) {
       throw InputError("--settings", "", "'" + item + "' is not S,W,L with each 1..8");
     }
     out.push_back(w);
@@ -106,15 +119,17 @@ std::vector<Widths> parse_settings(const std::string& text) {
 
 void sweep_trilinear(const SweepArgs& args) {
   const std::vector<Widths> settings = parse_settings(args.settings);
-  const TexramTexture photo = texram::import_image(patterns::default_image(256, 256), texram::TexelKind::kTrueColour);
-  const TexramTexture checker = texram::import_image(
-      patterns::checker(256, 256, 16, {30, 30, 30}, {230, 230, 230}), texram::TexelKind::kTrueColour);
+  const TexramTexture photo =
+      texram::import_image(patterns::default_image(256, 256), texram::TexelKind::kTrueColour);
+  const TexramTexture checker =
+      texram::import_image(patterns::checker(256, 256, 16, {30, 30, 30}, {230, 230, 230}),
+                           texram::TexelKind::kTrueColour);
   SamplerConfig base;
   base.kind = texram::TexelKind::kTrueColour;
   base.filter = texram::Filter::kTrilinear;
 
-  SweepTable table({"S,W,L", "max err", "mean err", "PSNR checker", "PSNR photo", "golden Ms/s", "rtl Ms/s",
-                    "rtl = golden", "cells", "logic", "depth"});
+  SweepTable table({"S,W,L", "max err", "mean err", "PSNR checker", "PSNR photo", "golden Ms/s",
+                    "rtl Ms/s", "rtl = golden", "cells", "logic", "depth"});
   for (const Widths& w : settings) {
     SamplerConfig c = base;
     c.widths = w;
@@ -124,17 +139,20 @@ void sweep_trilinear(const SweepArgs& args) {
     const std::string name = fmt::format("{},{},{}", w.sub_texel, w.weight, w.lod_frac);
     if (!args.out_dir.empty()) {
       std::filesystem::create_directories(args.out_dir);
-      write_image(args.out_dir + "/trilinear_" + fmt::format("s{}w{}l{}", w.sub_texel, w.weight, w.lod_frac) + ".png",
-                  vc.golden);
+      const std::string stem = args.out_dir + "/trilinear_" +
+                               fmt::format("s{}w{}l{}", w.sub_texel, w.weight, w.lod_frac);
+      write_image(stem + ".png", vc.golden);
+      write_image(stem + "_error.png", vc.error);
       if (&w == &settings.front()) write_image(args.out_dir + "/trilinear_ideal.png", vc.ideal);
     }
     const RtlSpeed rtl = measure_trilinear_rtl(w, checker, c, args);
-    const SynthFigures synth = args.synth ? synthesize("tmu_trilinear", {{"SubTexelBits", w.sub_texel},
-                                                                           {"WeightBits", w.weight},
-                                                                           {"LodFracBits", w.lod_frac}})
-                                          : SynthFigures{};
-    table.add({name, fmt::format("{:.3f}", max_err), fmt::format("{:.4f}", mean_err), fmt::format("{:.2f}", vc.psnr),
-               fmt::format("{:.2f}", vp.psnr),
+    const SynthFigures synth = args.synth
+                                   ? synthesize("tmu_trilinear", {{"SubTexelBits", w.sub_texel},
+                                                                  {"WeightBits", w.weight},
+                                                                  {"LodFracBits", w.lod_frac}})
+                                   : SynthFigures{};
+    table.add({name, fmt::format("{:.3f}", max_err), fmt::format("{:.4f}", mean_err),
+               fmt::format("{:.2f}", vc.psnr), fmt::format("{:.2f}", vp.psnr),
                fmt::format("{:.2f}", static_cast<double>(vc.samples + vp.samples) /
                                          (vc.golden_seconds + vp.golden_seconds) / 1e6),
                rtl.text(), rtl.verdict, synth.cells, synth.logic, synth.depth});
@@ -146,14 +164,21 @@ void sweep_trilinear(const SweepArgs& args) {
 }  // namespace
 
 void add_sweep_command(CLI::App& app, ExitCode&) {
-  auto* cmd = app.add_subcommand("sweep", "Accuracy against cost: error, PSNR, simulation speed and cells per width setting");
+  auto* cmd = app.add_subcommand(
+      "sweep", "Accuracy against cost: error, PSNR, simulation speed and cells per width setting");
   auto args = std::make_shared<SweepArgs>();
-  cmd->add_option("block", args->block, "trilinear")->required()->check(CLI::IsMember({"trilinear"}));
-  cmd->add_option("--settings", args->settings, "Width settings S,W,L separated by ';'")->capture_default_str();
-  cmd->add_option("--requests", args->requests, "Random requests for the error statistics")->capture_default_str();
+  cmd->add_option("block", args->block, "trilinear")
+      ->required()
+      ->check(CLI::IsMember({"trilinear"}));
+  cmd->add_option("--settings", args->settings, "Width settings S,W,L separated by ';'")
+      ->capture_default_str();
+  cmd->add_option("--requests", args->requests, "Random requests for the error statistics")
+      ->capture_default_str();
   cmd->add_option("--out", args->out_dir, "Write the rendered test pattern of every setting here");
   cmd->add_option("--markdown", args->markdown, "Also write the table as Markdown to this file");
-  cmd->add_flag("--no-synth", [args](int64_t) { args->synth = false; }, "Skip the Yosys runs (they take minutes)");
+  cmd->add_flag(
+      "--no-synth", [args](int64_t) { args->synth = false; },
+      "Skip the Yosys runs (they take minutes)");
   cmd->callback([args] {
     if (args->block == "trilinear") sweep_trilinear(*args);
   });

@@ -12,7 +12,8 @@
 namespace tmu::texsim {
 namespace {
 
-std::vector<size_t> widths_of(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
+std::vector<size_t> widths_of(const std::vector<std::string>& header,
+                              const std::vector<std::vector<std::string>>& rows) {
   std::vector<size_t> w;
   for (const auto& h : header) w.push_back(h.size());
   for (const auto& r : rows) {
@@ -46,7 +47,8 @@ void SweepTable::print(const std::string& markdown_path) const {
   fmt::print("wrote {}\n", markdown_path);
 }
 
-SynthFigures synthesize(const std::string& top, const std::vector<std::pair<std::string, int>>& params) {
+SynthFigures synthesize(const std::string& top,
+                        const std::vector<std::pair<std::string, int>>& params) {
   std::string cmd = std::string(TMU_SOURCE_DIR) + "/scripts/synth.sh";
   for (const auto& [name, value] : params) cmd += fmt::format(" -G {}={}", name, value);
   cmd += " " + top + " 2>&1";
@@ -57,7 +59,8 @@ SynthFigures synthesize(const std::string& top, const std::vector<std::pair<std:
   while (std::fgets(buf.data(), buf.size(), pipe)) {
     std::istringstream line(buf.data());
     std::string name, cells, flops, logic, mem, depth;
-    if (line >> name >> cells >> flops >> logic >> mem >> depth && name == top) f = {cells, logic, depth};
+    if (line >> name >> cells >> flops >> logic >> mem >> depth && name == top)
+      f = {cells, logic, depth};
   }
   ::pclose(pipe);
   return f;

@@ -38,7 +38,8 @@ struct SynthFigures {
 };
 
 // Runs scripts/synth.sh on `top` with the parameters overridden; "?" figures when it fails.
-SynthFigures synthesize(const std::string& top, const std::vector<std::pair<std::string, int>>& params);
+SynthFigures synthesize(const std::string& top,
+                        const std::vector<std::pair<std::string, int>>& params);
 
 struct RtlSpeed {
   double samples_per_second = 0;  // 0: no Verilated model at this setting

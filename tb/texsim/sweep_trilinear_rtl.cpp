@@ -26,14 +26,17 @@ std::unique_ptr<tb::Engine> rtl_engine(const texram::Widths& w, const tb::Trilin
 
 RtlSpeed measure_trilinear_rtl(const texram::Widths& widths, const texram::TexramTexture& texture,
                                const texram::SamplerConfig& config, const SweepArgs&) {
-  tb::TrilinearEnv env{std::make_shared<const texram::TexramTexture>(texture), config, "sweep pattern"};
+  tb::TrilinearEnv env{std::make_shared<const texram::TexramTexture>(texture), config,
+                       "sweep pattern"};
   const auto rtl = rtl_engine(widths, env);
   if (!rtl) return {};
   std::vector<tb::Txn> items = tb::trilinear_clut_load(texture);
-  for (const auto& v : texram::floor_view(256, 192, texture.geometry.texel_width(0), texture.geometry.texel_height(0))) {
-    items.push_back(tb::trilinear_sample_item(static_cast<int32_t>(formats::TexCoord::from_double(v.u).raw()),
-                                              static_cast<int32_t>(formats::TexCoord::from_double(v.v).raw()),
-                                              static_cast<int32_t>(formats::Lod::from_double(v.lambda).raw())));
+  for (const auto& v : texram::floor_view(256, 192, texture.geometry.texel_width(0),
+                                          texture.geometry.texel_height(0))) {
+    items.push_back(
+        tb::trilinear_sample_item(static_cast<int32_t>(formats::TexCoord::from_double(v.u).raw()),
+                                  static_cast<int32_t>(formats::TexCoord::from_double(v.v).raw()),
+                                  static_cast<int32_t>(formats::Lod::from_double(v.lambda).raw())));
   }
   tb::BlockOptions options;
   const tb::TrilinearBlock block(options, env);
@@ -41,7 +44,9 @@ RtlSpeed measure_trilinear_rtl(const texram::Widths& widths, const texram::Texra
   const tb::RunResult r = rtl->run(items, tb::RunOptions{});
   RtlSpeed out;
   out.samples_per_second = r.error.empty() ? static_cast<double>(r.outputs.size()) / r.seconds : 0;
-  out.verdict = r.error.empty() && r.outputs == golden.outputs && r.counters == golden.counters ? "yes" : "NO";
+  out.verdict = r.error.empty() && r.outputs == golden.outputs && r.counters == golden.counters
+                    ? "yes"
+                    : "NO";
   return out;
 }
 
