@@ -5,7 +5,8 @@
 
 namespace tmu::texram {
 
-std::vector<ViewRequest> floor_view(int width, int height, uint32_t texels_u, uint32_t texels_v, double tiles) {
+std::vector<ViewRequest> floor_view(int width, int height, uint32_t texels_u, uint32_t texels_v,
+                                    double tiles) {
   // Screen: sx in [-1, 1] across, sy in (0, 1] below the horizon (at 1/4 of the height). A
   // floor point at depth z = 1/sy projects there: u = a sx / sy, v = b / sy, so that the
   // bottom row spans `tiles` textures.

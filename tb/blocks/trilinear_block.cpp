@@ -1,6 +1,5 @@
 #include "blocks/trilinear_block.hpp"
 
-#include <trilinear_variants.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -8,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <trilinear_variants.hpp>
 
 #include "common/error.hpp"
 #include "common/image.hpp"
@@ -714,16 +714,19 @@ std::unique_ptr<Engine> TrilinearBlock::engine(const std::string& level) const {
   if (level == "hls") return std::make_unique<HlsEngine>(env_);
   if (level == "rtl") {
     // The Verilated model of these widths (rtl/CMakeLists.txt: TMU_TRILINEAR_VARIANTS).
-#define TMU_VARIANT(S, W, L, MODEL) \
-  if (env_.config.widths == texram::Widths{S, W, L}) return make_trilinear_rtl_engine<MODEL>("rtl", env_);
+#define TMU_VARIANT(S, W, L, MODEL)                  \
+  if (env_.config.widths == texram::Widths{S, W, L}) \
+    return make_trilinear_rtl_engine<MODEL>("rtl", env_);
     TMU_TRILINEAR_VARIANTS(TMU_VARIANT)
 #undef TMU_VARIANT
     std::string built;
-#define TMU_VARIANT(S, W, L, MODEL) built += (built.empty() ? "" : "; ") + std::string(#S "," #W "," #L);
+#define TMU_VARIANT(S, W, L, MODEL) \
+  built += (built.empty() ? "" : "; ") + std::string(#S "," #W "," #L);
     TMU_TRILINEAR_VARIANTS(TMU_VARIANT)
 #undef TMU_VARIANT
-    throw std::invalid_argument("trilinear: no rtl model was verilated at these widths (built: " + built +
-                                "; add them to TMU_TRILINEAR_VARIANTS in rtl/CMakeLists.txt)");
+    throw std::invalid_argument(
+        "trilinear: no rtl model was verilated at these widths (built: " + built +
+        "; add them to TMU_TRILINEAR_VARIANTS in rtl/CMakeLists.txt)");
   }
   throw std::invalid_argument("trilinear: no engine '" + level + "' (golden, hls, rtl)");
 }
