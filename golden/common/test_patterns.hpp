@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "common/image.hpp"
 
@@ -27,5 +28,12 @@ ImageRgb8 smooth_field(int width, int height, uint32_t seed);
 // The bundled demo image: a landscape (sky, sun, hills, a chequered path) with smooth
 // shading, grain and hard edges. Colourful enough to exercise the 256-entry CLUT.
 ImageRgb8 default_image(int width, int height);
+
+// `text` in the built-in 5 x 7 bitmap font (A-Z, 0-9, space and . , : ; ! ? - + = / ( ) [ ] ' "
+// _ * # % & < > @; lowercase is drawn as uppercase, any other character as a box), ink on paper.
+// One font dot is max(1, height / 9) pixels square, so the 7 rows of a glyph fill the height
+// with one dot of margin above and below (centred); glyphs are 6 dots apart (5 + 1 of space),
+// and the text, followed by a space, repeats from the left edge until the width is full.
+ImageRgb8 text(int width, int height, const std::string& text, Rgb8 ink, Rgb8 paper);
 
 }  // namespace tmu::patterns

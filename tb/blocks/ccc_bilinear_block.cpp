@@ -343,6 +343,10 @@ CccBilinearBlock::CccBilinearBlock(const BlockOptions& options)
   }
 }
 
+CccBilinearBlock::CccBilinearBlock(const BlockOptions& options,
+                                   std::shared_ptr<const ccc::Texture> texture)
+    : options_(options), texture_(std::move(texture)), lookahead_(options.lookahead) {}
+
 const Schema& CccBilinearBlock::inputs() const { return kInputs; }
 const Schema& CccBilinearBlock::outputs() const { return kOutputs; }
 

@@ -30,6 +30,8 @@ class CccBilinearBlock : public Block {
   // options.texture: a .ccc file (empty: a random texture drawn from options.seed);
   // options.lookahead: the unit's neighbour prefetch.
   explicit CccBilinearBlock(const BlockOptions& options);
+  // On a given texture (sides 1..4096), e.g. a scene material's.
+  CccBilinearBlock(const BlockOptions& options, std::shared_ptr<const ccc::Texture> texture);
 
   std::string name() const override { return "ccc-bilinear"; }
   const Schema& inputs() const override;

@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <ostream>
 
-#include "harness/gtkw.hpp"
 #include "harness/rtl_runner.hpp"
 #include "harness/scoreboard.hpp"
 #include "harness/vector_file.hpp"
+#include "harness/waveform.hpp"
 
 namespace tmu::tb {
 namespace {
@@ -119,23 +119,12 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
     fmt::print(log, "  reproduce: {} --engines {}\n", res.repro, level);
 
     if (level == "rtl") {  // a waveform window around the first failure
-      std::filesystem::create_directories(o.wave_dir);
-      TraceOptions trace;
-      trace.fst_path =
-          (std::filesystem::path(o.wave_dir) / (block.name() + "_mismatch.fst")).string();
-      trace.begin_cycle = fail_cycle > o.wave_before ? fail_cycle - o.wave_before : 0;
-      trace.end_cycle = fail_cycle + o.wave_after;
-      RunOptions traced = run_opt;
-      traced.trace = trace;
-      make("rtl")->run(items, traced);
-      const std::string gtkw = trace.fst_path.substr(0, trace.fst_path.size() - 4) + ".gtkw";
-      const uint64_t t0 = (trace.begin_cycle + kResetCycles) * kTimePerCycle;
-      write_gtkw(gtkw, trace.fst_path, block.ports(), t0 > kResetCycles * kTimePerCycle ? t0 : 0,
-                 (trace.end_cycle + kResetCycles) * kTimePerCycle,
-                 (fail_cycle + kResetCycles) * kTimePerCycle);
-      res.wave_path = trace.fst_path;
-      fmt::print(log, "  waveform: {} (cycles {}..{}); view: gtkwave {}\n", trace.fst_path,
-                 trace.begin_cycle, trace.end_cycle, gtkw);
+      const WaveWindow w =
+          dump_waveform(*make("rtl"), items, run_opt, fail_cycle, o.wave_before, o.wave_after,
+                        o.wave_dir, block.name() + "_mismatch", block.ports());
+      res.wave_path = w.fst;
+      fmt::print(log, "  waveform: {} (cycles {}..{}); view: gtkwave {}\n", w.fst, w.begin, w.end,
+                 w.gtkw);
     }
   }
 

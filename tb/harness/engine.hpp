@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,6 +35,8 @@ struct RunOptions {
   uint64_t x_seed = 1;  // rtl: seed of --x-initial unique / randomized reset values
   std::optional<TraceOptions> trace;
   uint64_t max_idle_cycles = 100000;  // no handshake for this long = deadlock
+  // Called now and then with the number of outputs so far (long runs show progress).
+  std::function<void(uint64_t outputs)> progress;
 };
 
 using Counters = std::vector<std::pair<std::string, uint64_t>>;

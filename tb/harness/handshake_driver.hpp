@@ -56,6 +56,8 @@ class HandshakeDriver {
       }
       result_.outputs.push_back(*out);
       result_.output_cycles.push_back(cycle_);
+      if (options_.progress && result_.outputs.size() % kProgressEvery == 0)
+        options_.progress(result_.outputs.size());
       last_progress_ = cycle_;
     }
     ++cycle_;
@@ -77,6 +79,7 @@ class HandshakeDriver {
   RunResult& result() { return result_; }
 
  private:
+  static constexpr size_t kProgressEvery = 4096;
   bool coin(double p) { return std::uniform_real_distribution<double>(0.0, 1.0)(rng_) < p; }
 
   const std::vector<Txn>& items_;

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Help for every command");
   tmu::texsim::ExitCode exit_code;
+  tmu::texsim::add_render_command(app, exit_code);
   tmu::texsim::add_cosim_command(app, exit_code);
   tmu::texsim::add_ccc_command(app, exit_code);
   tmu::texsim::add_mipgen_command(app, exit_code);

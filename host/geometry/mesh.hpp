@@ -1,0 +1,34 @@
+// Triangle meshes of the scene's objects, in object space.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace tmu::host {
+
+struct Vertex {
+  glm::dvec3 position{0};
+  glm::dvec3 normal{0, 1, 0};  // unit, object space
+  glm::dvec2 uv{0};            // texture coordinates, 1 = one texture across (times uv_repeat)
+};
+
+struct Mesh {
+  std::vector<Vertex> vertices;
+  std::vector<std::array<uint32_t, 3>> triangles;  // counter-clockwise seen from outside
+};
+
+// The object's mesh (plane, box, sphere, torus, or its OBJ file). Throws InputError naming the
+// OBJ file and line on a malformed file.
+Mesh make_mesh(const Object& object);
+
+// An OBJ file: v, vt, vn, f (3 or more vertices, fanned; v/vt/vn, v//vn, v/vt and negative
+// indices); other statements are ignored. Missing normals become face normals. vt's v is
+// flipped (1 - v): OBJ puts v = 0 at the bottom of the image, the texture unit at the top.
+Mesh load_obj(const std::string& path);
+
+}  // namespace tmu::host

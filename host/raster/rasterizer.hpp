@@ -1,0 +1,28 @@
+// The host front end (the rasterizer side of 000 Fig. 3 and 002 ch. 3): transform, clipping
+// against the view volume, perspective-correct interpolation, derivatives, LOD, normals, view
+// vector, lighting, depth test.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/mesh.hpp"
+#include "raster/fragment.hpp"
+#include "scene/scene.hpp"
+
+namespace tmu::host {
+
+struct RasterStats {
+  uint64_t triangles = 0;  // after culling and clipping
+  uint64_t fragments = 0;  // rasterized, before the depth test (overdraw included)
+  uint64_t visible = 0;    // after the depth test: one per covered pixel
+};
+
+// The visible fragments of rows [row_begin, row_end) (all rows by default), ordered by
+// (y, x). meshes[i] belongs to scene.objects[i]; texture_sizes[m] is the level-0 size
+// (texels) of material m's texture, which scales u, v and the derivatives to texels.
+std::vector<Fragment> rasterize(const Scene& scene, const std::vector<Mesh>& meshes,
+                                const std::vector<glm::ivec2>& texture_sizes, int row_begin = 0,
+                                int row_end = -1, RasterStats* stats = nullptr);
+
+}  // namespace tmu::host

@@ -1,0 +1,82 @@
+// A scene as scenes/README.md documents it: camera, lights, materials, objects. load_scene()
+// checks every key and reports the first problem with the file, the field path and the reason.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "texram/sampler_config.hpp"
+
+namespace tmu::host {
+
+struct Camera {
+  glm::dvec3 position{0, 0, 5}, target{0, 0, 0}, up{0, 1, 0};
+  double fov_deg = 50;
+  int width = 320, height = 240;
+  double near = 0.05, far = 1000;
+};
+
+struct Light {
+  enum class Kind { kAmbient, kDirectional, kPoint };
+  Kind kind = Kind::kAmbient;
+  glm::dvec3 vector{0};  // directional: the direction it shines towards; point: its position
+  glm::dvec3 colour{1};
+};
+
+struct TextureSource {
+  enum class Kind { kImage, kCcc, kPattern };
+  Kind kind = Kind::kPattern;
+  std::string path;     // kImage, kCcc: resolved against the scene file's folder
+  std::string pattern;  // checker, text, gradient, noise, smooth, default
+  int width = 256, height = 256;
+  int cell = 32;                    // checker
+  std::string text;                 // text
+  std::vector<glm::dvec3> colours;  // checker, text: 0..1
+  uint32_t seed = 1;                // noise, smooth
+};
+
+struct Material {
+  std::string name;
+  TextureSource texture;
+  texram::SamplerConfig sampler;  // kind (config), channel, filter, borders, colours, combine
+  enum class Unit { kTrilinear, kLowcost };
+  Unit unit = Unit::kTrilinear;
+  enum class Mipmaps { kHost, kMipgen };
+  Mipmaps mipmaps = Mipmaps::kHost;
+};
+
+struct Transform {
+  glm::dvec3 translate{0}, rotate_deg{0}, scale{1};
+  glm::dmat4 matrix() const;  // scale, then rotate X, Y, Z, then translate
+};
+
+struct Object {
+  enum class Shape { kPlane, kBox, kSphere, kTorus, kMesh };
+  Shape shape = Shape::kPlane;
+  glm::dvec3 size{1};  // plane: x, z (size.y unused); box: x, y, z
+  glm::dvec2 uv_repeat{1, 1};
+  double radius = 1, tube = 0.25;
+  glm::ivec2 segments{32, 16};
+  std::string file;  // mesh: resolved OBJ path
+  Transform transform;
+  int material = 0;  // index into Scene::materials
+};
+
+struct Scene {
+  std::string path;  // the file it came from
+  Camera camera;
+  glm::dvec3 background{0};
+  std::vector<Light> lights;
+  std::vector<Material> materials;  // in the order the file names them
+  std::vector<Object> objects;
+};
+
+// Throws InputError(file, field path, reason) on the first problem.
+Scene load_scene(const std::string& path);
+// The same from text (for tests and fuzzing); `name` stands for the file in messages and
+// `folder` resolves relative paths.
+Scene parse_scene(const std::string& text, const std::string& name, const std::string& folder);
+
+}  // namespace tmu::host

@@ -1,0 +1,26 @@
+// The parts of a scene file, each parsed and checked by its own function (scene.cpp puts them
+// together). Every function throws InputError naming the file, the field path and the reason.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/json_node.hpp"
+#include "scene/scene.hpp"
+
+namespace tmu::host {
+
+Camera parse_camera(const JsonNode& node);
+std::vector<Light> parse_lights(const JsonNode& node);
+// `folder` resolves texture paths.
+std::vector<Material> parse_materials(const JsonNode& node, const std::string& folder);
+// `folder` resolves mesh paths; material names index `materials`.
+std::vector<Object> parse_objects(const JsonNode& node, const std::vector<Material>& materials,
+                                  const std::string& folder);
+Transform parse_transform(const JsonNode& node);
+
+// `relative` against `folder` (absolute paths are kept); the file must exist, else `node`
+// fails with "file not found: <resolved path>".
+std::string resolve_existing_file(const JsonNode& node, const std::string& folder);
+
+}  // namespace tmu::host

@@ -1,0 +1,197 @@
+#include "render/pipeline.hpp"
+
+#include <fmt/format.h>
+
+#include <bit>
+#include <stdexcept>
+
+#include "blocks/ccc_bilinear_block.hpp"
+#include "blocks/mipgen_block.hpp"
+#include "blocks/trilinear_block.hpp"
+#include "ccc/ccc_cache_bilinear.hpp"
+#include "ccc/ccc_encoder.hpp"
+#include "common/error.hpp"
+#include "common/image.hpp"
+#include "common/test_patterns.hpp"
+#include "texram/mipgen_stream.hpp"
+#include "texram/trilinear.hpp"
+#include "texram/trilinear_ideal.hpp"
+
+namespace tmu::render {
+namespace {
+
+Rgb8 rgb8(const glm::dvec3& c) {
+  auto ch = [](double v) { return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255)); };
+  return {ch(c.r), ch(c.g), ch(c.b)};
+}
+
+// The level-0 image of an image or pattern source.
+ImageRgb8 source_image(const host::TextureSource& t) {
+  if (t.kind == host::TextureSource::Kind::kImage) return read_image(t.path);
+  const Rgb8 c0 = t.colours.size() > 0 ? rgb8(t.colours[0]) : Rgb8{20, 20, 20};
+  const Rgb8 c1 = t.colours.size() > 1 ? rgb8(t.colours[1]) : Rgb8{235, 235, 235};
+  if (t.pattern == "checker") return patterns::checker(t.width, t.height, t.cell, c0, c1);
+  if (t.pattern == "text") return patterns::text(t.width, t.height, t.text, c0, c1);
+  if (t.pattern == "gradient") return patterns::gradient(t.width, t.height);
+  if (t.pattern == "noise") return patterns::noise(t.width, t.height, t.seed);
+  if (t.pattern == "smooth") return patterns::smooth_field(t.width, t.height, t.seed);
+  return patterns::default_image(t.width, t.height);
+}
+
+// Level 0 of one byte plane of a host-built texture: what the mipgen unit receives.
+texram::Level8 level0_plane(const texram::TexramTexture& t, int plane) {
+  texram::Level8 l(t.geometry.texel_width(0), t.geometry.texel_height(0));
+  for (uint32_t y = 0; y < l.height; ++y) {
+    for (uint32_t x = 0; x < l.width; ++x) l.at(x, y) = t.cell(0, x, y, plane);
+  }
+  return l;
+}
+
+// A unit's engines and ports from a block that owns its environment.
+template <class Block>
+void attach(UnitRun& run, std::shared_ptr<Block> block) {
+  run.ports = block->ports();
+  run.engine = [block](const std::string& level) { return block->engine(level); };
+}
+
+}  // namespace
+
+Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level_(level) {
+  for (size_t m = 0; m < scene.materials.size(); ++m) {
+    const host::Material& mat = scene.materials[m];
+    const std::string field = "materials." + mat.name + ".texture";
+    MaterialTexture mt;
+    try {
+      const bool ccc_file = mat.texture.kind == host::TextureSource::Kind::kCcc;
+      if (mat.unit == host::Material::Unit::kLowcost) {
+        ccc::Texture tex = ccc_file ? ccc::read_ccc(mat.texture.path) : ccc::encode(source_image(mat.texture));
+        mt.size = {static_cast<int>(tex.width), static_cast<int>(tex.height)};
+        mt.ccc = std::make_shared<const ccc::Texture>(std::move(tex));
+      } else {
+        texram::TexramTexture tex = ccc_file ? texram::import_ccc(ccc::read_ccc(mat.texture.path))
+                                             : texram::import_image(source_image(mat.texture), mat.sampler.kind,
+                                                                    mat.sampler.single_channel);
+        if (mat.mipmaps == host::Material::Mipmaps::kMipgen && level != Level::kIdeal) {
+          // The real-time mipmap generator (000 §12) writes every level into the banks from
+          // the level-0 texels, one stream per byte plane; the trilinear unit then reads what
+          // it wrote. (Ideal keeps the host pyramid: the same box rule, computed exactly.)
+          const texram::Geometry& g = tex.geometry;
+          texram::TexramTexture generated{tex.kind, g, {}, tex.clut};
+          for (auto& b : generated.banks) b.assign(g.bank_cells(), 0);
+          for (int p = 0; p < g.planes(); ++p) {
+            const texram::MipgenConfig cfg{g.log2_width(), g.log2_height(), false, g.planes(), p};
+            UnitRun run;
+            run.kind = "mipgen";
+            run.material = mat.name + (g.planes() > 1 ? fmt::format(".plane{}", p) : "");
+            run.engine = [cfg](const std::string& l) { return tb::make_mipgen_engine(l, cfg); };
+            run.ports = tb::MipgenBlock(tb::BlockOptions{}).ports();
+            run.items = tb::mipgen_frame_items(level0_plane(tex, p), false);
+            run_unit(run, level, {});
+            for (const tb::Txn& w : run.result.outputs) {
+              const texram::CellWrite cw = tb::mipgen_txn_write(w);
+              generated.banks[cw.cell.bank][cw.cell.address] = cw.value;
+            }
+            units_.push_back(std::move(run));
+            fragment_of_output_.emplace_back();
+          }
+          tex = std::move(generated);
+        }
+        mt.size = {static_cast<int>(tex.geometry.texel_width(0)), static_cast<int>(tex.geometry.texel_height(0))};
+        mt.texram = std::make_shared<const texram::TexramTexture>(std::move(tex));
+      }
+    } catch (const InputError& e) {
+      throw InputError(scene.path, field, e.what());
+    } catch (const std::invalid_argument& e) {
+      throw InputError(scene.path, field, e.what());
+    }
+    textures_.push_back(std::move(mt));
+  }
+}
+
+std::vector<glm::ivec2> Pipeline::texture_sizes() const {
+  std::vector<glm::ivec2> sizes;
+  for (const MaterialTexture& t : textures_) sizes.push_back(t.size);
+  return sizes;
+}
+
+std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& records,
+                                      const std::vector<host::Fragment>* fragments,
+                                      std::vector<glm::dvec4>* ideal_rgba, const Progress& progress) {
+  std::vector<uint32_t> out(records.size(), 0);
+  if (ideal_rgba) ideal_rgba->assign(records.size(), glm::dvec4(0));
+  // The fragments of each material, in frame order.
+  std::vector<std::vector<size_t>> of_material(scene_.materials.size());
+  for (size_t i = 0; i < records.size(); ++i) of_material[records[i].material].push_back(i);
+
+  uint64_t done = 0;
+  for (size_t m = 0; m < scene_.materials.size(); ++m) {
+    const std::vector<size_t>& frags = of_material[m];
+    if (frags.empty()) continue;  // no fragment, no unit
+    const host::Material& mat = scene_.materials[m];
+    const MaterialTexture& tex = textures_[m];
+    const bool lowcost = mat.unit == host::Material::Unit::kLowcost;
+
+    if (level_ == Level::kIdeal) {
+      for (size_t i : frags) {
+        const host::Fragment& f = (*fragments)[i];
+        const uint32_t shade = records[i].shade;
+        glm::dvec4 c;
+        if (lowcost) {
+          const auto rgb = ccc::ideal_bilinear(*tex.ccc, f.uv.x, f.uv.y);
+          c = {rgb[0], rgb[1], rgb[2], 255.0};
+          if (mat.sampler.combine == texram::Combine::kShade) {
+            c *= glm::dvec4(f.shade, 1.0);
+          }
+        } else {
+          const auto s = texram::ideal_sample(*tex.texram, mat.sampler, f.uv.x, f.uv.y, f.lambda, shade);
+          c = {s[0], s[1], s[2], s[3]};
+        }
+        (*ideal_rgba)[i] = c;
+        out[i] = texram::rgba(static_cast<uint32_t>(std::lround(std::clamp(c.r, 0.0, 255.0))),
+                              static_cast<uint32_t>(std::lround(std::clamp(c.g, 0.0, 255.0))),
+                              static_cast<uint32_t>(std::lround(std::clamp(c.b, 0.0, 255.0))),
+                              static_cast<uint32_t>(std::lround(std::clamp(c.a, 0.0, 255.0))));
+      }
+      done += frags.size();
+      if (progress) progress(done, records.size());
+      continue;
+    }
+
+    UnitRun run;
+    run.material = mat.name;
+    if (lowcost) {
+      run.kind = "lowcost";
+      attach(run, std::make_shared<tb::CccBilinearBlock>(tb::BlockOptions{}, tex.ccc));
+      run.items = tb::bilinear_clut_load(*tex.ccc);
+      for (size_t i : frags) run.items.push_back(tb::bilinear_sample_item(records[i].u, records[i].v));
+    } else {
+      run.kind = "trilinear";
+      tb::TrilinearEnv env{tex.texram, mat.sampler, mat.name};
+      attach(run, std::make_shared<tb::TrilinearBlock>(tb::BlockOptions{}, env));
+      run.items = tb::trilinear_clut_load(*tex.texram);
+      for (size_t i : frags) {
+        const host::FragmentRecord& r = records[i];
+        run.items.push_back(tb::trilinear_sample_item(r.u, r.v, r.lambda, r.shade));
+      }
+    }
+    tb::RunOptions options;
+    const uint64_t base = done;
+    if (progress) options.progress = [&, base](uint64_t n) { progress(base + n, records.size()); };
+    run_unit(run, level_, options);
+    for (size_t k = 0; k < frags.size(); ++k) {
+      uint32_t c = static_cast<uint32_t>(run.result.outputs[k].f[0]);
+      if (lowcost) {  // RGB888 -> RGBA8888; the low-cost unit has no eq. 5 stage: the host does it
+        c = (c << 8) | 0xFF;
+        if (mat.sampler.combine != texram::Combine::kOne) c = texram::combine(c, mat.sampler, records[frags[k]].shade);
+      }
+      out[frags[k]] = c;
+    }
+    done += frags.size();
+    if (progress) progress(done, records.size());
+    units_.push_back(std::move(run));
+    fragment_of_output_.push_back(frags);
+  }
+  return out;
+}
+
+}  // namespace tmu::render

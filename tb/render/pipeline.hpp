@@ -1,0 +1,63 @@
+// A scene's texture pipeline: every material's texture, and every fragment through the chain
+// of units its material names. Built from the scene, so a material that does not use a unit
+// never makes one:
+//   mipmaps "host"   : host pyramid                 -> trilinear (or lowcost)
+//   mipmaps "mipgen" : mipgen unit fills the banks  -> trilinear
+//   unit "lowcost"   : the CCC low-cost unit (bilinear at level 0), then eq. 5 on the host
+#pragma once
+
+#include <functional>
+#include <glm/glm.hpp>
+#include <memory>
+#include <vector>
+
+#include "ccc/ccc_texture.hpp"
+#include "raster/fragment.hpp"
+#include "render/units.hpp"
+#include "scene/scene.hpp"
+#include "texram/texture.hpp"
+
+namespace tmu::render {
+
+struct MaterialTexture {
+  std::shared_ptr<const texram::TexramTexture> texram;  // the trilinear unit's banks
+  std::shared_ptr<const ccc::Texture> ccc;              // the low-cost unit's level 0
+  glm::ivec2 size{1, 1};                                // level-0 texels
+};
+
+// Called with (units done, fragments textured so far, fragments in all).
+using Progress = std::function<void(uint64_t done, uint64_t total)>;
+
+class Pipeline {
+ public:
+  // Builds every material's texture; a mipgen chain runs its mipgen unit here (at `level`;
+  // the host pyramid for ideal, which is what the golden generator computes). Throws
+  // InputError naming the scene and the material's texture field.
+  Pipeline(const host::Scene& scene, Level level);
+
+  Level level() const { return level_; }
+  const std::vector<MaterialTexture>& textures() const { return textures_; }
+  std::vector<glm::ivec2> texture_sizes() const;
+
+  // Textures the fragments (fixed-point records; ideal also takes the double fragments, in the
+  // same order). Returns RGBA8888 per fragment; ideal_rgba receives the ideal model's
+  // unrounded colours (ideal only).
+  std::vector<uint32_t> shade(const std::vector<host::FragmentRecord>& records,
+                              const std::vector<host::Fragment>* fragments, std::vector<glm::dvec4>* ideal_rgba,
+                              const Progress& progress = nullptr);
+
+  // Every unit built so far, with its stimulus and results (mipgen units first).
+  std::vector<UnitRun>& units() { return units_; }
+  const std::vector<UnitRun>& units() const { return units_; }
+  // For each unit (same order), the fragment index of each of its outputs (mipgen: none).
+  const std::vector<std::vector<size_t>>& fragments_of_outputs() const { return fragment_of_output_; }
+
+ private:
+  const host::Scene& scene_;
+  Level level_;
+  std::vector<MaterialTexture> textures_;
+  std::vector<UnitRun> units_;
+  std::vector<std::vector<size_t>> fragment_of_output_;
+};
+
+}  // namespace tmu::render

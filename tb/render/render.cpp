@@ -1,0 +1,259 @@
+#include "render/render.hpp"
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <ostream>
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "common/image.hpp"
+#include "geometry/mesh.hpp"
+#include "harness/waveform.hpp"
+#include "raster/rasterizer.hpp"
+#include "render/pipeline.hpp"
+#include "render/progress.hpp"
+#include "scene/scene.hpp"
+#include "texram/sampler_config.hpp"
+#include "trace/fragment_trace.hpp"
+
+namespace tmu::render {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+Rgb8 rgb_of(uint32_t rgba) {
+  return {static_cast<uint8_t>(rgba >> 24), static_cast<uint8_t>(rgba >> 16), static_cast<uint8_t>(rgba >> 8)};
+}
+
+// The frame band with the background and every fragment's colour.
+ImageRgb8 compose(const host::Scene& scene, const Band& band, const std::vector<host::FragmentRecord>& records,
+                  const std::vector<uint32_t>& rgba) {
+  ImageRgb8 img(band.frame_width, band.row_end - band.row_begin);
+  const Rgb8 bg = rgb_of(texram::rgba(static_cast<uint32_t>(std::lround(std::clamp(scene.background.r, 0.0, 1.0) * 255)),
+                                      static_cast<uint32_t>(std::lround(std::clamp(scene.background.g, 0.0, 1.0) * 255)),
+                                      static_cast<uint32_t>(std::lround(std::clamp(scene.background.b, 0.0, 1.0) * 255)),
+                                      255));
+  std::fill(img.pixels.begin(), img.pixels.end(), bg);
+  for (size_t i = 0; i < records.size(); ++i) img.at(records[i].x, records[i].y - band.row_begin) = rgb_of(rgba[i]);
+  return img;
+}
+
+// A "hot" colour ramp for error maps: black, red, yellow, white as t goes 0 -> 1.
+Rgb8 hot(double t) {
+  auto c = [](double v) { return static_cast<uint8_t>(std::lround(255 * std::clamp(v, 0.0, 1.0))); };
+  return {c(3 * t), c(3 * t - 1), c(3 * t - 2)};
+}
+
+std::string describe(const host::FragmentRecord& r, const host::Scene& scene) {
+  return fmt::format("material {} u={:.4f} v={:.4f} lambda={:.4f} shade=0x{:08X}", scene.materials[r.material].name,
+                     r.u / 256.0, r.v / 256.0, r.lambda / 256.0, r.shade);
+}
+
+// The ideal engine's colours as a float image (EXR): what 8 bits cannot hold.
+void write_exr(const std::string& path, const Band& band, const host::Scene& scene,
+               const std::vector<host::FragmentRecord>& records, const std::vector<glm::dvec4>& ideal) {
+  std::vector<float> px(static_cast<size_t>(band.frame_width) * (band.row_end - band.row_begin) * 3);
+  for (size_t i = 0; i < px.size(); i += 3) {
+    px[i] = static_cast<float>(scene.background.r);
+    px[i + 1] = static_cast<float>(scene.background.g);
+    px[i + 2] = static_cast<float>(scene.background.b);
+  }
+  for (size_t k = 0; k < records.size(); ++k) {
+    const size_t at = 3 * (static_cast<size_t>(records[k].y - band.row_begin) * band.frame_width + records[k].x);
+    for (int c = 0; c < 3; ++c) px[at + static_cast<size_t>(c)] = static_cast<float>(ideal[k][c] / 255.0);
+  }
+  write_atomically(path, [&](const std::string& tmp) {
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) throw InputError(path, "", "no OpenEXR writer");
+    OIIO::ImageSpec spec(band.frame_width, band.row_end - band.row_begin, 3, OIIO::TypeDesc::FLOAT);
+    if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, px.data()) || !out->close()) {
+      throw InputError(path, "", "cannot write: " + out->geterror());
+    }
+  });
+}
+
+}  // namespace
+
+int render_scene(const std::string& scene_path, const RenderOptions& o, std::ostream& log, RenderReport* report_out) {
+  const auto t_start = Clock::now();
+  const host::Scene scene = host::load_scene(scene_path);
+  const int width = scene.camera.width, height = scene.camera.height;
+  if (o.tiles > height) throw InputError("--tile", "", fmt::format("{} bands for a frame of {} rows", o.tiles, height));
+  RenderReport rep;
+  rep.scene = scene_path;
+  rep.engine = std::string(name(o.level));
+  rep.band = band_of(o.tile, o.tiles, width, height);
+  const Band& band = rep.band;
+  rep.pixels = static_cast<uint64_t>(width) * static_cast<uint64_t>(band.row_end - band.row_begin);
+
+  auto t = Clock::now();
+  Pipeline pipe(scene, o.level);
+  rep.textures_s = since(t);
+
+  // The fragments: from the front end, or replayed from a trace.
+  t = Clock::now();
+  std::vector<host::Fragment> fragments;
+  std::vector<host::FragmentRecord> records;
+  if (!o.replay_trace.empty()) {
+    if (o.level == Level::kIdeal || o.compare_ideal) {
+      throw InputError("--replay", "", "a trace holds fixed-point records; the ideal engine needs the front end");
+    }
+    const host::FragmentTrace trace = host::read_trace(o.replay_trace);
+    if (trace.width != width || trace.height != height) {
+      throw InputError(o.replay_trace, "frame",
+                       fmt::format("the trace is {}x{}, the scene {}x{}", trace.width, trace.height, width, height));
+    }
+    for (const host::FragmentRecord& r : trace.records) {
+      if (r.y >= band.row_begin && r.y < band.row_end) records.push_back(r);
+      if (r.material >= scene.materials.size()) {
+        throw InputError(o.replay_trace, "material", fmt::format("material {} is not in the scene", r.material));
+      }
+    }
+    rep.raster.fragments = rep.raster.visible = records.size();
+  } else {
+    std::vector<host::Mesh> meshes;
+    for (const host::Object& obj : scene.objects) meshes.push_back(host::make_mesh(obj));
+    fragments = host::rasterize(scene, meshes, pipe.texture_sizes(), band.row_begin, band.row_end, &rep.raster);
+    for (const host::Fragment& f : fragments) records.push_back(host::quantize(f));
+  }
+  rep.front_end_s = since(t);
+  std::filesystem::create_directories(o.out_dir);
+  const std::filesystem::path dir(o.out_dir);
+  if (!o.save_trace.empty()) {
+    host::write_trace(o.save_trace, {scene_path, width, height, records});
+    rep.files.push_back(o.save_trace);
+  }
+
+  // Texturing.
+  t = Clock::now();
+  std::vector<uint32_t> rgba;
+  std::vector<glm::dvec4> ideal;
+  {
+    ProgressBar bar(fmt::format("render {}", name(o.level)), "frag", o.progress);
+    rgba = pipe.shade(records, &fragments, o.level == Level::kIdeal ? &ideal : nullptr,
+                      [&](uint64_t done, uint64_t total) { bar.update(done, total); });
+  }
+  rep.units_s = since(t);
+  if (o.inject_fault >= 0 && static_cast<size_t>(o.inject_fault) < rgba.size()) {
+    rgba[static_cast<size_t>(o.inject_fault)] ^= 0x100u;  // a deliberate wrong bit (blue LSB)
+  }
+  for (const UnitRun& u : pipe.units()) {
+    UnitReport ur{u.name(), u.kind, static_cast<uint64_t>(u.result.outputs.size()), u.result.cycles, false,
+                  u.result.seconds, u.result.counters};
+    if (ur.cycles == 0) {  // untimed golden: the trilinear unit is memory-bound, one period per access
+      const auto accesses = tb::counter_value(u.result.counters, "accesses");
+      if (accesses) {
+        ur.cycles = *accesses + tb::counter_value(u.result.counters, "slow_accesses").value_or(0);
+        ur.predicted = true;
+      }
+    }
+    rep.units.push_back(std::move(ur));
+  }
+
+  // The picture.
+  const ImageRgb8 image = compose(scene, band, records, rgba);
+  const std::string stem = o.tiles > 1 ? fmt::format("render.tile-{}-of-{}", o.tile, o.tiles) : "render";
+  const std::string png = (dir / (stem + ".png")).string();
+  if (o.tiles > 1) {
+    write_band(png, image, band);
+  } else {
+    write_image(png, image);
+  }
+  rep.files.push_back(png);
+  if (o.level == Level::kIdeal) {
+    const std::string exr = (dir / (stem + ".exr")).string();
+    write_exr(exr, band, scene, records, ideal);
+    rep.files.push_back(exr);
+  }
+
+  // Bit for bit against another engine, fragment by fragment.
+  if (o.check) {
+    Pipeline ref(scene, *o.check);
+    const std::vector<uint32_t> expected = ref.shade(records, &fragments, nullptr);
+    CheckReport c;
+    c.against = std::string(name(*o.check));
+    c.compared = records.size();
+    ImageRgb8 heat = compose(scene, band, records, expected);
+    for (Rgb8& p : heat.pixels) p = {static_cast<uint8_t>(p.r / 4), static_cast<uint8_t>(p.g / 4), static_cast<uint8_t>(p.b / 4)};
+    size_t first = records.size();
+    for (size_t i = 0; i < records.size(); ++i) {
+      if (rgba[i] == expected[i]) continue;
+      if (c.differing++ == 0) first = i;
+      if (c.first.size() < 5) c.first.push_back({records[i].x, records[i].y, describe(records[i], scene), expected[i], rgba[i]});
+      int worst = 0;
+      for (int ch = 0; ch < 4; ++ch) {
+        worst = std::max(worst, std::abs(static_cast<int>(texram::channel(rgba[i], ch)) -
+                                         static_cast<int>(texram::channel(expected[i], ch))));
+      }
+      heat.at(records[i].x, records[i].y - band.row_begin) = hot(0.34 + worst / 48.0);
+    }
+    if (c.differing) {
+      const std::string diff = (dir / (stem + ".check-diff.png")).string();
+      write_image(diff, heat);
+      rep.files.push_back(diff);
+      if (o.waveform && o.level == Level::kRtl) {  // the unit and output behind the first mismatch
+        for (size_t u = 0; u < pipe.units().size() && c.waveform.empty(); ++u) {
+          const auto& outs = pipe.fragments_of_outputs()[u];
+          const auto it = std::find(outs.begin(), outs.end(), first);
+          if (it == outs.end()) continue;
+          UnitRun& unit = pipe.units()[u];
+          const size_t k = static_cast<size_t>(it - outs.begin());
+          const tb::WaveWindow w = tb::dump_waveform(*unit.engine("rtl"), unit.items, tb::RunOptions{},
+                                                     unit.result.output_cycles[k], 64, 16, o.out_dir,
+                                                     stem + ".mismatch", unit.ports);
+          c.waveform = fmt::format("{} (unit {}, cycles {}..{}; gtkwave {})", w.fst, unit.name(), w.begin, w.end, w.gtkw);
+          rep.files.push_back(w.fst);
+        }
+      }
+    }
+    rep.check = c;
+  }
+
+  // Against the ideal model: how far the hardware's arithmetic is from exact.
+  if (o.compare_ideal && o.level != Level::kIdeal) {
+    Pipeline ip(scene, Level::kIdeal);
+    std::vector<glm::dvec4> exact;
+    ip.shade(records, &fragments, &exact);
+    CompareReport c;
+    ImageRgb8 heat(width, band.row_end - band.row_begin);
+    double se = 0, sum = 0;
+    for (size_t i = 0; i < records.size(); ++i) {
+      double worst = 0;
+      for (int ch = 0; ch < 3; ++ch) {
+        const double e = texram::channel(rgba[i], ch) - exact[i][ch];
+        se += e * e;
+        sum += std::abs(e);
+        worst = std::max(worst, std::abs(e));
+      }
+      c.max_error = std::max(c.max_error, worst);
+      heat.at(records[i].x, records[i].y - band.row_begin) = hot(worst / 4.0);
+    }
+    const double n = 3.0 * static_cast<double>(std::max<size_t>(records.size(), 1));
+    c.psnr = se > 0 ? 10 * std::log10(255.0 * 255.0 * n / se) : INFINITY;
+    c.mean_error = sum / n;
+    const std::string err = (dir / (stem + ".compare-error.png")).string();
+    write_image(err, heat);
+    rep.files.push_back(err);
+    rep.compare = c;
+  }
+
+  rep.total_s = since(t_start);
+  const std::string json_path = (dir / (stem + ".report.json")).string();
+  const std::string text_path = (dir / (stem + ".report.txt")).string();
+  rep.files.push_back(json_path);
+  rep.files.push_back(text_path);
+  write_file_atomically(json_path, rep.json());
+  const std::string text = rep.text();
+  write_file_atomically(text_path, text);
+  log << text;
+  if (report_out) *report_out = rep;
+  return rep.check && rep.check->differing ? 1 : 0;
+}
+
+}  // namespace tmu::render

@@ -1,0 +1,47 @@
+#include "render/units.hpp"
+
+#include <map>
+#include <stdexcept>
+
+namespace tmu::render {
+
+std::string_view name(Level level) {
+  switch (level) {
+    case Level::kIdeal: return "ideal";
+    case Level::kGolden: return "golden";
+    case Level::kHls: return "hls";
+    case Level::kRtl: return "rtl";
+  }
+  return "?";
+}
+
+std::optional<Level> parse_level(std::string_view text) {
+  for (Level l : {Level::kIdeal, Level::kGolden, Level::kHls, Level::kRtl}) {
+    if (name(l) == text) return l;
+  }
+  return std::nullopt;
+}
+
+std::string engine_name(Level level) { return level == Level::kIdeal ? "golden" : std::string(name(level)); }
+
+namespace {
+std::map<std::string, UnitCensus>& census_map() {
+  static std::map<std::string, UnitCensus> m;
+  return m;
+}
+}  // namespace
+
+UnitCensus& census(const std::string& kind) { return census_map()[kind]; }
+void reset_census() { census_map().clear(); }
+
+void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options) {
+  UnitCensus& c = census(unit.kind);
+  ++c.built;
+  unit.result = unit.engine(engine_name(level))->run(unit.items, options);
+  if (!unit.result.error.empty()) {
+    throw std::runtime_error(unit.name() + " (" + engine_name(level) + ") failed: " + unit.result.error);
+  }
+  c.cycles += unit.result.cycles;
+}
+
+}  // namespace tmu::render

@@ -1,0 +1,624 @@
+// Scene files (scenes/README.md): every kind of mistake is an InputError naming the file, the
+// exact field path and the reason; a valid scene gives back every field it sets; the
+// transform order; the text pattern the scenes' text textures use.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "ccc/ccc_texture.hpp"
+#include "common/error.hpp"
+#include "common/image.hpp"
+#include "common/test_patterns.hpp"
+#include "scene/scene.hpp"
+
+namespace tmu::host {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+// A scene every test starts from: valid, without files.
+Json base_scene() {
+  return Json::parse(R"({
+    "camera": {"position": [0, 2, 6], "target": [0, 0, 0], "up": [0, 1, 0], "fov": 50,
+               "resolution": [320, 240]},
+    "lights": [{"type": "ambient", "colour": [0.25, 0.25, 0.25]}],
+    "materials": {
+      "floor": {"texture": {"pattern": "checker", "size": [256, 256], "cell": 32}},
+      "label": {"texture": {"pattern": "text", "size": [128, 32], "text": "TEXRAM"}}
+    },
+    "objects": [
+      {"type": "plane", "size": [8, 8], "uv_repeat": [4, 4], "material": "floor"},
+      {"type": "sphere", "radius": 1, "segments": [16, 8], "material": "label",
+       "transform": {"translate": [0, 1, 0]}},
+      {"type": "torus", "radius": 1, "tube": 0.25, "segments": [24, 12], "material": "floor"}
+    ]
+  })");
+}
+
+Scene parse(const Json& j, const std::string& folder = ".") {
+  return parse_scene(j.dump(2), "test.json", folder);
+}
+
+// Parses `j` expecting an InputError at `field` whose reason contains `reason`.
+void expect_error(const Json& j, const std::string& field, const std::string& reason,
+                  const std::string& folder = ".") {
+  try {
+    parse(j, folder);
+    ADD_FAILURE() << "no error; expected " << field << ": " << reason;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "test.json");
+    EXPECT_EQ(e.field(), field) << e.what();
+    EXPECT_NE(e.reason().find(reason), std::string::npos) << e.what();
+  }
+}
+
+// A scratch folder removed at the end of the test.
+class TempDir {
+ public:
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ =
+        fs::temp_directory_path() / ("tmu_host_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
+  std::string str() const { return path_.string(); }
+
+ private:
+  fs::path path_;
+};
+
+// --- the base scene --------------------------------------------------------------------------
+
+TEST(HostSceneTest, BaseSceneParsesWithDefaults) {
+  const Scene s = parse(base_scene());
+  EXPECT_EQ(s.path, "test.json");
+  ASSERT_EQ(s.materials.size(), 2u);
+  EXPECT_EQ(s.materials[0].name, "floor");  // file order, not alphabetical
+  EXPECT_EQ(s.materials[1].name, "label");
+  const texram::SamplerConfig& c = s.materials[0].sampler;
+  EXPECT_EQ(c.kind, texram::TexelKind::kTrueColour);
+  EXPECT_EQ(c.filter, texram::Filter::kTrilinear);
+  EXPECT_EQ(c.border_u, texram::Border::kWrap);
+  EXPECT_EQ(c.border_v, texram::Border::kWrap);
+  EXPECT_EQ(c.combine, texram::Combine::kShade);
+  EXPECT_EQ(c.border_rgba, 0x000000FFu);
+  EXPECT_EQ(c.constant_rgba, 0xFFFFFFFFu);
+  EXPECT_EQ(s.materials[0].unit, Material::Unit::kTrilinear);
+  EXPECT_EQ(s.materials[0].mipmaps, Material::Mipmaps::kHost);
+  EXPECT_EQ(s.camera.near, 0.05);
+  EXPECT_EQ(s.camera.far, 1000);
+  EXPECT_EQ(s.background, glm::dvec3(0));
+  ASSERT_EQ(s.objects.size(), 3u);
+  EXPECT_EQ(s.objects[1].material, 1);
+  EXPECT_EQ(s.objects[1].transform.scale, glm::dvec3(1));
+}
+
+// --- missing and unknown keys ------------------------------------------------------------------
+
+TEST(HostSceneTest, MissingRequiredKeysNameTheirPath) {
+  Json j = base_scene();
+  j.erase("camera");
+  expect_error(j, "camera", "missing required key");
+  j = base_scene();
+  j["camera"].erase("fov");
+  expect_error(j, "camera.fov", "missing required key");
+  j = base_scene();
+  j["materials"]["floor"].erase("texture");
+  expect_error(j, "materials.floor.texture", "missing required key");
+  j = base_scene();
+  j["objects"][2].erase("material");
+  expect_error(j, "objects[2].material", "missing required key");
+  j = base_scene();
+  j["objects"][0].erase("type");
+  expect_error(j, "objects[0].type", "missing required key");
+  j = base_scene();
+  j["lights"][0].erase("colour");
+  expect_error(j, "lights[0].colour", "missing required key");
+  j = base_scene();
+  j["materials"]["label"]["texture"].erase("text");
+  expect_error(j, "materials.label.texture.text", "missing required key");
+}
+
+TEST(HostSceneTest, UnknownKeysAreErrorsAtEveryLevel) {
+  Json j = base_scene();
+  j["cameras"] = 1;
+  expect_error(j, "cameras", "unknown key");
+  j = base_scene();
+  j["camera"]["zoom"] = 2;
+  expect_error(j, "camera.zoom", "unknown key");
+  j = base_scene();
+  j["materials"]["floor"]["shiny"] = true;
+  expect_error(j, "materials.floor.shiny", "unknown key");
+  j = base_scene();
+  j["materials"]["floor"]["texture"]["seed"] = 3;  // not a checker key
+  expect_error(j, "materials.floor.texture.seed", "unknown key");
+  j = base_scene();
+  j["objects"][1]["colour"] = {1, 0, 0};
+  expect_error(j, "objects[1].colour", "unknown key");
+  j = base_scene();
+  j["objects"][0]["radius"] = 1;  // a sphere's key on a plane
+  expect_error(j, "objects[0].radius", "unknown key");
+  j = base_scene();
+  j["objects"][1]["transform"]["skew"] = {0, 0, 0};
+  expect_error(j, "objects[1].transform.skew", "unknown key");
+  j = base_scene();
+  j["lights"][0]["direction"] = {0, -1, 0};  // ambient light has no direction
+  expect_error(j, "lights[0].direction", "unknown key");
+  j = base_scene();
+  j["materials"]["floor"]["border"] = {{"u", "clamp"}, {"w", "wrap"}};
+  expect_error(j, "materials.floor.border.w", "unknown key");
+}
+
+TEST(HostSceneTest, DuplicateKeyIsAnError) {
+  const std::string text = base_scene().dump();
+  const std::string dup = text.substr(0, text.size() - 1) + R"(,"camera":{}})";
+  try {
+    parse_scene(dup, "test.json", ".");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "camera");
+    EXPECT_NE(e.reason().find("duplicate"), std::string::npos);
+  }
+  const std::string inner = R"({"camera": {"position": [0, 0, 1], "position": [0, 0, 2]}})";
+  try {
+    parse_scene(inner, "test.json", ".");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "camera.position");
+  }
+}
+
+// --- types and ranges --------------------------------------------------------------------------
+
+TEST(HostSceneTest, WrongTypesNameTheField) {
+  Json j = base_scene();
+  j["camera"]["fov"] = "50";
+  expect_error(j, "camera.fov", "expected a number");
+  j = base_scene();
+  j["camera"]["position"] = {0, "a", 0};
+  expect_error(j, "camera.position[1]", "expected a number");
+  j = base_scene();
+  j["camera"]["target"] = {0, 0};
+  expect_error(j, "camera.target", "expected a list of 3 numbers");
+  j = base_scene();
+  j["objects"] = Json::object();
+  expect_error(j, "objects", "expected a list");
+  j = base_scene();
+  j["materials"] = Json::array();
+  expect_error(j, "materials", "expected an object");
+  j = base_scene();
+  j["camera"]["resolution"] = {320.5, 240};
+  expect_error(j, "camera.resolution[0]", "expected an integer");
+  j = base_scene();
+  j["materials"]["floor"]["filter"] = 2;
+  expect_error(j, "materials.floor.filter", "expected a string");
+  j = base_scene();
+  j["materials"]["floor"]["border"] = 1;
+  expect_error(j, "materials.floor.border", "expected a border mode");
+  j = base_scene();
+  j["objects"][1]["transform"] = {1, 2, 3};
+  expect_error(j, "objects[1].transform", "expected an object");
+}
+
+TEST(HostSceneTest, OutOfRangeValuesNameTheField) {
+  Json j = base_scene();
+  j["camera"]["fov"] = 0;
+  expect_error(j, "camera.fov", "(0, 180)");
+  j["camera"]["fov"] = 180;
+  expect_error(j, "camera.fov", "(0, 180)");
+  j = base_scene();
+  j["camera"]["resolution"] = {0, 240};
+  expect_error(j, "camera.resolution[0]", "1..4096");
+  j["camera"]["resolution"] = {320, 5000};
+  expect_error(j, "camera.resolution[1]", "1..4096");
+  j = base_scene();
+  j["camera"]["near"] = 0;
+  expect_error(j, "camera.near", "> 0");
+  j = base_scene();
+  j["camera"]["near"] = 2;
+  j["camera"]["far"] = 1;
+  expect_error(j, "camera.far", "greater than near");
+  j = base_scene();
+  j["camera"]["up"] = {0, 2, 6};  // parallel to target - position
+  expect_error(j, "camera.up", "parallel");
+  j = base_scene();
+  j["camera"]["target"] = {0, 2, 6};
+  expect_error(j, "camera.target", "equals the camera position");
+  j = base_scene();
+  j["objects"][1]["radius"] = -1;
+  expect_error(j, "objects[1].radius", "> 0");
+  j = base_scene();
+  j["objects"][1]["segments"] = {2, 8};
+  expect_error(j, "objects[1].segments[0]", "3..");
+  j["objects"][1]["segments"] = {3, 1};
+  expect_error(j, "objects[1].segments[1]", "2..");
+  j = base_scene();
+  j["objects"][2]["segments"] = {24, 2};  // a torus tube needs 3
+  expect_error(j, "objects[2].segments[1]", "3..");
+  j = base_scene();
+  j["objects"][0]["size"] = {8, 0};
+  expect_error(j, "objects[0].size[1]", "> 0");
+  j = base_scene();
+  j["objects"][1]["transform"]["scale"] = {1, 0, 1};
+  expect_error(j, "objects[1].transform.scale[1]", "must not be 0");
+  j = base_scene();
+  j["background"] = {0, 1.5, 0};
+  expect_error(j, "background[1]", "0..1");
+  j = base_scene();
+  j["lights"][0]["colour"] = {0, -1, 0};
+  expect_error(j, "lights[0].colour[1]", ">= 0");
+  j = base_scene();
+  j["materials"]["floor"]["border_colour"] = {0, 0, 0, 2};
+  expect_error(j, "materials.floor.border_colour[3]", "0..1");
+  j = base_scene();
+  j["materials"]["floor"]["texture"]["size"] = {256, 100};  // not a power of two
+  expect_error(j, "materials.floor.texture.size", "powers of two");
+  j["materials"]["floor"]["texture"]["size"] = {2048, 256};  // beyond the TEXRAM
+  expect_error(j, "materials.floor.texture.size", "powers of two up to 1024");
+  j = base_scene();
+  j["materials"]["floor"]["texture"]["cell"] = 0;
+  expect_error(j, "materials.floor.texture.cell", "1..");
+}
+
+TEST(HostSceneTest, NamesMustExist) {
+  Json j = base_scene();
+  j["objects"][2]["material"] = "marble";
+  expect_error(j, "objects[2].material", "unknown material 'marble'");
+  j = base_scene();
+  j["materials"]["floor"]["texture"]["pattern"] = "plaid";
+  expect_error(j, "materials.floor.texture.pattern", "unknown value 'plaid'");
+  j = base_scene();
+  j["objects"][0]["type"] = "cone";
+  expect_error(j, "objects[0].type", "unknown value 'cone'");
+  j = base_scene();
+  j["lights"][0]["type"] = "spot";
+  expect_error(j, "lights[0].type", "unknown value 'spot'");
+  j = base_scene();
+  j["materials"]["floor"]["border"] = {{"u", "clamp"}, {"v", "repeat"}};
+  expect_error(j, "materials.floor.border.v", "unknown value 'repeat'");
+  j = base_scene();
+  j["materials"]["floor"]["config"] = "palette";
+  expect_error(j, "materials.floor.config", "unknown value");
+}
+
+TEST(HostSceneTest, MaterialRulesNameTheField) {
+  Json j = base_scene();
+  j["materials"]["floor"]["texture"] = Json::object();
+  expect_error(j, "materials.floor.texture", "needs one of");
+  j["materials"]["floor"]["texture"] = {{"pattern", "noise"}, {"image", "a.png"}};
+  expect_error(j, "materials.floor.texture", "more than one");
+  j = base_scene();
+  j["materials"]["floor"]["channel"] = "g";  // config is rgba
+  expect_error(j, "materials.floor.channel", "only applies to config single");
+  j = base_scene();
+  j["materials"]["floor"]["unit"] = "lowcost";  // needs ccc
+  expect_error(j, "materials.floor.unit", "needs config ccc");
+  j = base_scene();
+  j["materials"]["floor"]["config"] = "index";
+  j["materials"]["floor"]["mipmaps"] = "mipgen";
+  expect_error(j, "materials.floor.mipmaps", "mipmap generator");
+  j = base_scene();
+  Json many = Json::object();
+  for (int i = 0; i < 257; ++i) many[fmt::format("m{}", i)] = j["materials"]["floor"];
+  j["materials"] = many;
+  expect_error(j, "materials", "at most 256");
+}
+
+TEST(HostSceneTest, ReservedEffectsAreNotImplementedYet) {
+  for (const char* effect :
+       {"footprint", "bump", "environment", "reflectance", "detail", "procedural"}) {
+    Json j = base_scene();
+    j["materials"]["label"][effect] = Json::object();
+    expect_error(j, std::string("materials.label.") + effect,
+                 std::string("the ") + effect + " effect is not implemented yet");
+  }
+}
+
+TEST(HostSceneTest, SyntaxErrorNamesLineAndColumn) {
+  const std::string text = "{\n  \"camera\": {\n    \"fov\": 50,,\n  }\n}\n";
+  try {
+    parse_scene(text, "broken.json", ".");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "broken.json");
+    EXPECT_EQ(e.field().rfind("line 3, column ", 0), 0u) << e.what();
+    EXPECT_NE(e.reason().find("syntax error"), std::string::npos) << e.what();
+  }
+  try {
+    parse_scene("", "empty.json", ".");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field().rfind("line 1, column ", 0), 0u) << e.what();
+  }
+}
+
+// --- files -----------------------------------------------------------------------------------
+
+TEST(HostSceneTest, MissingFilesAreResolvedAgainstTheSceneFolder) {
+  const TempDir dir;
+  Json j = base_scene();
+  j["materials"]["photo"] = {{"texture", {{"image", "images/missing.png"}}}};
+  expect_error(j, "materials.photo.texture.image",
+               "file not found: " + (fs::path(dir.str()) / "images/missing.png").string(),
+               dir.str());
+  j = base_scene();
+  j["objects"][0] = {{"type", "mesh"}, {"file", "models/none.obj"}, {"material", "floor"}};
+  expect_error(j, "objects[0].file", "file not found", dir.str());
+  j = base_scene();
+  j["objects"][0] = {{"type", "mesh"}, {"material", "floor"}};
+  expect_error(j, "objects[0].file", "missing required key", dir.str());
+}
+
+TEST(HostSceneTest, ImageSidesAreChecked) {
+  const TempDir dir;
+  write_image(dir / "odd.png", patterns::gradient(48, 32));
+  Json j = base_scene();
+  j["materials"]["photo"] = {{"texture", {{"image", "odd.png"}}}};
+  expect_error(j, "materials.photo.texture.image", "powers of two", dir.str());
+}
+
+TEST(HostSceneTest, LoadSceneReportsAnUnreadableFile) {
+  try {
+    load_scene("/nonexistent/scene.json");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "/nonexistent/scene.json");
+  }
+}
+
+// Every field a scene can set, from a file on disk with textures and a mesh beside it.
+TEST(HostSceneTest, ValidSceneRoundTripsAllFields) {
+  const TempDir dir;
+  fs::create_directories(dir / "images");
+  write_image(dir / "images/photo.png", patterns::gradient(64, 32));
+  ccc::Texture cccx;
+  cccx.width = 16;
+  cccx.height = 8;
+  cccx.blocks.assign(8, 0x01020304u);
+  ccc::write_ccc(dir / "tiles.ccc", cccx);
+  {
+    std::ofstream obj(dir / "tri.obj");
+    obj << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  }
+  const Json j = Json::parse(R"({
+    "camera": {"position": [1, 2, 3], "target": [0, 0.5, -1], "up": [0, 0, 1], "fov": 35.5,
+               "resolution": [640, 480], "near": 0.5, "far": 80},
+    "background": [0.05, 0.1, 1],
+    "lights": [
+      {"type": "ambient", "colour": [0.25, 0.5, 0.75]},
+      {"type": "directional", "direction": [-1, -2, -1], "colour": [0.8, 0.8, 2]},
+      {"type": "point", "position": [2, 3, 2], "colour": [1, 1, 1]}
+    ],
+    "materials": {
+      "photo": {"texture": {"image": "images/photo.png"}, "config": "single", "channel": "b",
+                "filter": "bilinear", "border": {"u": "clamp", "v": "mirror"},
+                "border_colour": [0.2, 0.4, 0.6, 0.5], "combine": "constant",
+                "constant": [1, 0.5, 0, 1], "mipmaps": "mipgen"},
+      "tiles": {"texture": {"ccc": "tiles.ccc"}, "unit": "lowcost", "filter": "nearest",
+                "border": "border", "combine": "one"},
+      "words": {"texture": {"pattern": "text", "size": [64, 16], "text": "Hi!",
+                            "colours": [[1, 0, 0], [0, 0, 1]]}, "config": "luminance"},
+      "noise": {"texture": {"pattern": "noise", "size": [32, 1024], "seed": 4000000000}}
+    },
+    "objects": [
+      {"type": "plane", "size": [8, 4], "uv_repeat": [4, 2], "material": "words"},
+      {"type": "box", "size": [1, 2, 3], "material": "photo",
+       "transform": {"translate": [0, 0.5, 0], "rotate": [10, 30, 45], "scale": [1, -2, 3]}},
+      {"type": "sphere", "radius": 0.5, "segments": [12, 6], "material": "tiles"},
+      {"type": "torus", "radius": 2, "tube": 0.5, "segments": [5, 3], "material": "noise"},
+      {"type": "mesh", "file": "tri.obj", "uv_repeat": [2, 2], "material": "photo"}
+    ]
+  })");
+  {
+    std::ofstream out(dir / "scene.json");
+    out << j.dump(2);
+  }
+  const Scene s = load_scene(dir / "scene.json");
+  EXPECT_EQ(s.path, dir / "scene.json");
+  EXPECT_EQ(s.camera.position, glm::dvec3(1, 2, 3));
+  EXPECT_EQ(s.camera.target, glm::dvec3(0, 0.5, -1));
+  EXPECT_EQ(s.camera.up, glm::dvec3(0, 0, 1));
+  EXPECT_EQ(s.camera.fov_deg, 35.5);
+  EXPECT_EQ(s.camera.width, 640);
+  EXPECT_EQ(s.camera.height, 480);
+  EXPECT_EQ(s.camera.near, 0.5);
+  EXPECT_EQ(s.camera.far, 80);
+  EXPECT_EQ(s.background, glm::dvec3(0.05, 0.1, 1));
+
+  ASSERT_EQ(s.lights.size(), 3u);
+  EXPECT_EQ(s.lights[0].kind, Light::Kind::kAmbient);
+  EXPECT_EQ(s.lights[0].colour, glm::dvec3(0.25, 0.5, 0.75));
+  EXPECT_EQ(s.lights[1].kind, Light::Kind::kDirectional);
+  EXPECT_EQ(s.lights[1].vector, glm::dvec3(-1, -2, -1));
+  EXPECT_EQ(s.lights[1].colour, glm::dvec3(0.8, 0.8, 2));
+  EXPECT_EQ(s.lights[2].kind, Light::Kind::kPoint);
+  EXPECT_EQ(s.lights[2].vector, glm::dvec3(2, 3, 2));
+
+  ASSERT_EQ(s.materials.size(), 4u);
+  const Material& photo = s.materials[0];
+  EXPECT_EQ(photo.name, "photo");
+  EXPECT_EQ(photo.texture.kind, TextureSource::Kind::kImage);
+  EXPECT_EQ(photo.texture.path, (fs::path(dir.str()) / "images/photo.png").string());
+  EXPECT_EQ(photo.texture.width, 64);
+  EXPECT_EQ(photo.texture.height, 32);
+  EXPECT_EQ(photo.sampler.kind, texram::TexelKind::kSingle);
+  EXPECT_EQ(photo.sampler.single_channel, 2);
+  EXPECT_EQ(photo.sampler.filter, texram::Filter::kBilinear);
+  EXPECT_EQ(photo.sampler.border_u, texram::Border::kClamp);
+  EXPECT_EQ(photo.sampler.border_v, texram::Border::kMirror);
+  // round(255 x): 51, 102, 153, and 127.5 to the even 128.
+  EXPECT_EQ(photo.sampler.border_rgba, texram::rgba(51, 102, 153, 128));
+  EXPECT_EQ(photo.sampler.combine, texram::Combine::kConstant);
+  EXPECT_EQ(photo.sampler.constant_rgba, texram::rgba(255, 128, 0, 255));
+  EXPECT_EQ(photo.unit, Material::Unit::kTrilinear);
+  EXPECT_EQ(photo.mipmaps, Material::Mipmaps::kMipgen);
+
+  const Material& tiles = s.materials[1];
+  EXPECT_EQ(tiles.texture.kind, TextureSource::Kind::kCcc);
+  EXPECT_EQ(tiles.texture.path, (fs::path(dir.str()) / "tiles.ccc").string());
+  EXPECT_EQ(tiles.texture.width, 16);
+  EXPECT_EQ(tiles.texture.height, 8);
+  EXPECT_EQ(tiles.sampler.kind, texram::TexelKind::kCcc);  // the default for a .ccc file
+  EXPECT_EQ(tiles.unit, Material::Unit::kLowcost);
+  EXPECT_EQ(tiles.sampler.filter, texram::Filter::kNearest);
+  EXPECT_EQ(tiles.sampler.border_u, texram::Border::kBorder);
+  EXPECT_EQ(tiles.sampler.border_v, texram::Border::kBorder);
+  EXPECT_EQ(tiles.sampler.combine, texram::Combine::kOne);
+
+  const Material& words = s.materials[2];
+  EXPECT_EQ(words.texture.kind, TextureSource::Kind::kPattern);
+  EXPECT_EQ(words.texture.pattern, "text");
+  EXPECT_EQ(words.texture.text, "Hi!");
+  EXPECT_EQ(words.texture.width, 64);
+  EXPECT_EQ(words.texture.height, 16);
+  ASSERT_EQ(words.texture.colours.size(), 2u);
+  EXPECT_EQ(words.texture.colours[0], glm::dvec3(1, 0, 0));
+  EXPECT_EQ(words.texture.colours[1], glm::dvec3(0, 0, 1));
+  EXPECT_EQ(words.sampler.kind, texram::TexelKind::kLuminance);
+
+  const Material& noise = s.materials[3];
+  EXPECT_EQ(noise.texture.pattern, "noise");
+  EXPECT_EQ(noise.texture.seed, 4000000000u);
+  EXPECT_EQ(noise.texture.width, 32);
+  EXPECT_EQ(noise.texture.height, 1024);
+
+  ASSERT_EQ(s.objects.size(), 5u);
+  EXPECT_EQ(s.objects[0].shape, Object::Shape::kPlane);
+  EXPECT_EQ(s.objects[0].size.x, 8);
+  EXPECT_EQ(s.objects[0].size.z, 4);
+  EXPECT_EQ(s.objects[0].uv_repeat, glm::dvec2(4, 2));
+  EXPECT_EQ(s.objects[0].material, 2);
+  EXPECT_EQ(s.objects[1].shape, Object::Shape::kBox);
+  EXPECT_EQ(s.objects[1].size, glm::dvec3(1, 2, 3));
+  EXPECT_EQ(s.objects[1].transform.translate, glm::dvec3(0, 0.5, 0));
+  EXPECT_EQ(s.objects[1].transform.rotate_deg, glm::dvec3(10, 30, 45));
+  EXPECT_EQ(s.objects[1].transform.scale, glm::dvec3(1, -2, 3));
+  EXPECT_EQ(s.objects[1].material, 0);
+  EXPECT_EQ(s.objects[2].shape, Object::Shape::kSphere);
+  EXPECT_EQ(s.objects[2].radius, 0.5);
+  EXPECT_EQ(s.objects[2].segments, glm::ivec2(12, 6));
+  EXPECT_EQ(s.objects[2].material, 1);
+  EXPECT_EQ(s.objects[3].shape, Object::Shape::kTorus);
+  EXPECT_EQ(s.objects[3].radius, 2);
+  EXPECT_EQ(s.objects[3].tube, 0.5);
+  EXPECT_EQ(s.objects[3].segments, glm::ivec2(5, 3));
+  EXPECT_EQ(s.objects[3].material, 3);
+  EXPECT_EQ(s.objects[4].shape, Object::Shape::kMesh);
+  EXPECT_EQ(s.objects[4].file, (fs::path(dir.str()) / "tri.obj").string());
+  EXPECT_EQ(s.objects[4].uv_repeat, glm::dvec2(2, 2));
+}
+
+TEST(HostSceneTest, CccTextureKeepsConfigCcc) {
+  const TempDir dir;
+  ccc::Texture t;
+  t.width = t.height = 8;
+  t.blocks.assign(4, 0);
+  ccc::write_ccc(dir / "t.ccc", t);
+  Json j = base_scene();
+  j["materials"]["c"] = {{"texture", {{"ccc", "t.ccc"}}}, {"config", "rgba"}};
+  expect_error(j, "materials.c.config", "ccc", dir.str());
+  j["materials"]["c"]["config"] = "ccc";
+  EXPECT_EQ(parse(j, dir.str()).materials[2].sampler.kind, texram::TexelKind::kCcc);
+  // An image may be given the CCC configuration (encoded by the renderer).
+  j["materials"]["floor"]["config"] = "ccc";
+  EXPECT_EQ(parse(j, dir.str()).materials[0].sampler.kind, texram::TexelKind::kCcc);
+}
+
+// --- transform ---------------------------------------------------------------------------------
+
+TEST(HostSceneTest, TransformScalesThenRotatesXYZThenTranslates) {
+  Transform t;
+  t.scale = {2, 3, 4};
+  t.rotate_deg = {30, 45, 60};
+  t.translate = {1, -2, 5};
+  const auto rot = [](double deg, int axis) {
+    const double c = std::cos(glm::radians(deg)), s = std::sin(glm::radians(deg));
+    glm::dmat3 r(1.0);  // column-major: r[column][row]
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    r[a][a] = c;
+    r[b][b] = c;
+    r[a][b] = s;
+    r[b][a] = -s;
+    return r;
+  };
+  const glm::dvec3 p(0.3, -0.7, 1.1);
+  glm::dvec3 expected = p * t.scale;
+  expected = rot(30, 0) * expected;
+  expected = rot(45, 1) * expected;
+  expected = rot(60, 2) * expected;
+  expected += t.translate;
+  const glm::dvec3 got(t.matrix() * glm::dvec4(p, 1));
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[i], expected[i], 1e-12) << i;
+  // A right-handed rotation: +90 degrees about Z takes +X to +Y.
+  Transform z;
+  z.rotate_deg = {0, 0, 90};
+  const glm::dvec3 y(z.matrix() * glm::dvec4(1, 0, 0, 1));
+  EXPECT_NEAR(y.x, 0, 1e-15);
+  EXPECT_NEAR(y.y, 1, 1e-15);
+}
+
+// --- the text pattern ---------------------------------------------------------------------------
+
+TEST(HostTextPatternTest, DrawsGlyphsScaledToTheHeight) {
+  const Rgb8 ink{255, 0, 0}, paper{0, 0, 255};
+  // Height 18: two pixels per dot, glyph rows 2..15 (one dot of margin above and below).
+  const ImageRgb8 img = patterns::text(24, 18, "T", ink, paper);
+  ASSERT_EQ(img.width, 24);
+  ASSERT_EQ(img.height, 18);
+  for (int x = 0; x < 24; ++x) {
+    EXPECT_EQ(img.at(x, 0), paper);
+    EXPECT_EQ(img.at(x, 1), paper);
+    EXPECT_EQ(img.at(x, 16), paper);
+    EXPECT_EQ(img.at(x, 17), paper);
+  }
+  // The bar of the T: dots 0..4 of row 0 -> pixels 0..9 of rows 2 and 3.
+  for (int x = 0; x < 10; ++x) EXPECT_EQ(img.at(x, 2), ink) << x;
+  EXPECT_EQ(img.at(10, 2), paper);  // the space between glyphs
+  // The stem: dot 2 -> pixels 4, 5 on rows 4..15.
+  for (int y = 4; y < 16; ++y) {
+    EXPECT_EQ(img.at(4, y), ink);
+    EXPECT_EQ(img.at(5, y), ink);
+    EXPECT_EQ(img.at(3, y), paper);
+  }
+  // "T " repeats every 12 dots = 24 pixels; the next T would start at x = 24.
+  for (int x = 12; x < 24; ++x) EXPECT_EQ(img.at(x, 2), paper) << x;
+}
+
+TEST(HostTextPatternTest, LowercaseUnknownAndRepetition) {
+  const Rgb8 ink{0, 0, 0}, paper{255, 255, 255};
+  EXPECT_EQ(patterns::text(100, 9, "texram", ink, paper),
+            patterns::text(100, 9, "TEXRAM", ink, paper));
+  // An unknown character is a box: the outline of 5 x 7 dots.
+  const ImageRgb8 box = patterns::text(6, 9, "~", ink, paper);
+  for (int x = 0; x < 5; ++x) {
+    EXPECT_EQ(box.at(x, 1), ink);
+    EXPECT_EQ(box.at(x, 7), ink);
+  }
+  for (int y = 1; y < 8; ++y) {
+    EXPECT_EQ(box.at(0, y), ink);
+    EXPECT_EQ(box.at(4, y), ink);
+  }
+  EXPECT_EQ(box.at(2, 4), paper);
+  // "AB" + space is 18 dots wide: the image repeats with that period.
+  const ImageRgb8 rep = patterns::text(54, 9, "AB", ink, paper);
+  for (int y = 0; y < 9; ++y) {
+    for (int x = 0; x < 36; ++x) EXPECT_EQ(rep.at(x, y), rep.at(x + 18, y));
+  }
+  // Digits and punctuation are in the font (not boxes).
+  EXPECT_NE(patterns::text(6, 9, "0", ink, paper), box);
+  EXPECT_NE(patterns::text(6, 9, ".", ink, paper), box);
+}
+
+}  // namespace
+}  // namespace tmu::host
