@@ -110,6 +110,31 @@ package tmu_pkg;
   localparam int unsigned TexCombineFrac = 0;
   typedef logic [TexCombineW-1:0] tex_combine_t;
 
+  // PixelCoord: UQ12.0, pixel x or y of a fragment, 0..4095
+  localparam int unsigned PixelCoordW = 12;
+  localparam int unsigned PixelCoordFrac = 0;
+  typedef logic [PixelCoordW-1:0] pixel_coord_t;
+
+  // MaterialId: UQ8.0, index of a fragment's material in its scene
+  localparam int unsigned MaterialIdW = 8;
+  localparam int unsigned MaterialIdFrac = 0;
+  typedef logic [MaterialIdW-1:0] material_id_t;
+
+  // TexDeriv: SQ16.8, a derivative d(u or v)/d(x or y), texels of level 0 per pixel
+  localparam int unsigned TexDerivW = 24;
+  localparam int unsigned TexDerivFrac = 8;
+  typedef logic signed [TexDerivW-1:0] tex_deriv_t;
+
+  // SolidCoord: SQ12.12, solid texture coordinate (object space), for procedural textures
+  localparam int unsigned SolidCoordW = 24;
+  localparam int unsigned SolidCoordFrac = 12;
+  typedef logic signed [SolidCoordW-1:0] solid_coord_t;
+
+  // UnitComp: SQ2.14, a component of a unit vector (normal, view vector)
+  localparam int unsigned UnitCompW = 16;
+  localparam int unsigned UnitCompFrac = 14;
+  typedef logic signed [UnitCompW-1:0] unit_comp_t;
+
   // StatCount: UQ32.0, statistics counter (wraps)
   localparam int unsigned StatCountW = 32;
   localparam int unsigned StatCountFrac = 0;

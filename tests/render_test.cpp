@@ -1,6 +1,8 @@
 // Rendering scenes: only the units a scene calls for are built and clocked; traces replay bit
 // for bit; bands merge into the whole frame; --check catches an altered result; bad materials
 // name their field.
+#include "render/render.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,7 +11,6 @@
 
 #include "common/error.hpp"
 #include "common/image.hpp"
-#include "render/render.hpp"
 #include "render/tiles.hpp"
 #include "tests/cosim_test_support.hpp"
 
@@ -62,7 +63,8 @@ TEST(RenderTest, PlainSceneBuildsAndClocksOnlyTheTrilinearUnits) {
   EXPECT_TRUE(has_kind(all, "mipgen") && has_kind(all, "lowcost") && has_kind(all, "trilinear"));
   EXPECT_EQ(plain.pixels, all.pixels);
   EXPECT_LT(plain.unit_cycles(), all.unit_cycles());
-  std::cout << "plain scene: " << plain.unit_cycles() << " cycles; everything: " << all.unit_cycles() << " cycles\n";
+  std::cout << "plain scene: " << plain.unit_cycles()
+            << " cycles; everything: " << all.unit_cycles() << " cycles\n";
 }
 
 TEST(RenderTest, RtlMatchesGoldenOnTheDefaultScene) {
@@ -125,7 +127,8 @@ TEST(RenderTest, CompareIdealReportsPsnr) {
 TEST(RenderTest, MaterialTextureErrorsNameTheField) {
   const auto dir = tb::testing::temp_dir("tmu_render_bad");
   write_image((dir / "odd.png").string(), ImageRgb8(37, 21));
-  std::ofstream(dir / "bad.json") << R"({"camera": {"position": [0, 1, 3], "target": [0, 0, 0], "up": [0, 1, 0],
+  std::ofstream(dir / "bad.json")
+      << R"({"camera": {"position": [0, 1, 3], "target": [0, 0, 0], "up": [0, 1, 0],
     "fov": 50, "resolution": [32, 24]}, "materials": {"m": {"texture": {"image": "odd.png"}}},
     "objects": [{"type": "plane", "material": "m"}]})";
   std::stringstream log;

@@ -7,8 +7,9 @@
 
 namespace tmu::tb {
 
-WaveWindow dump_waveform(Engine& engine, const std::vector<Txn>& items, RunOptions options, uint64_t fail_cycle,
-                         uint64_t before, uint64_t after, const std::string& dir, const std::string& stem,
+WaveWindow dump_waveform(Engine& engine, const std::vector<Txn>& items, RunOptions options,
+                         uint64_t fail_cycle, uint64_t before, uint64_t after,
+                         const std::string& dir, const std::string& stem,
                          const std::vector<Port>& ports) {
   std::filesystem::create_directories(dir);
   WaveWindow w;

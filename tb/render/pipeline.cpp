@@ -21,7 +21,9 @@ namespace tmu::render {
 namespace {
 
 Rgb8 rgb8(const glm::dvec3& c) {
-  auto ch = [](double v) { return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255)); };
+  auto ch = [](double v) {
+    return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
+  };
   return {ch(c.r), ch(c.g), ch(c.b)};
 }
 
@@ -64,13 +66,15 @@ Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level
     try {
       const bool ccc_file = mat.texture.kind == host::TextureSource::Kind::kCcc;
       if (mat.unit == host::Material::Unit::kLowcost) {
-        ccc::Texture tex = ccc_file ? ccc::read_ccc(mat.texture.path) : ccc::encode(source_image(mat.texture));
+        ccc::Texture tex =
+            ccc_file ? ccc::read_ccc(mat.texture.path) : ccc::encode(source_image(mat.texture));
         mt.size = {static_cast<int>(tex.width), static_cast<int>(tex.height)};
         mt.ccc = std::make_shared<const ccc::Texture>(std::move(tex));
       } else {
-        texram::TexramTexture tex = ccc_file ? texram::import_ccc(ccc::read_ccc(mat.texture.path))
-                                             : texram::import_image(source_image(mat.texture), mat.sampler.kind,
-                                                                    mat.sampler.single_channel);
+        texram::TexramTexture tex =
+            ccc_file ? texram::import_ccc(ccc::read_ccc(mat.texture.path))
+                     : texram::import_image(source_image(mat.texture), mat.sampler.kind,
+                                            mat.sampler.single_channel);
         if (mat.mipmaps == host::Material::Mipmaps::kMipgen && level != Level::kIdeal) {
           // The real-time mipmap generator (000 §12) writes every level into the banks from
           // the level-0 texels, one stream per byte plane; the trilinear unit then reads what
@@ -96,7 +100,8 @@ Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level
           }
           tex = std::move(generated);
         }
-        mt.size = {static_cast<int>(tex.geometry.texel_width(0)), static_cast<int>(tex.geometry.texel_height(0))};
+        mt.size = {static_cast<int>(tex.geometry.texel_width(0)),
+                   static_cast<int>(tex.geometry.texel_height(0))};
         mt.texram = std::make_shared<const texram::TexramTexture>(std::move(tex));
       }
     } catch (const InputError& e) {
@@ -116,7 +121,8 @@ std::vector<glm::ivec2> Pipeline::texture_sizes() const {
 
 std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& records,
                                       const std::vector<host::Fragment>* fragments,
-                                      std::vector<glm::dvec4>* ideal_rgba, const Progress& progress) {
+                                      std::vector<glm::dvec4>* ideal_rgba,
+                                      const Progress& progress) {
   std::vector<uint32_t> out(records.size(), 0);
   if (ideal_rgba) ideal_rgba->assign(records.size(), glm::dvec4(0));
   // The fragments of each material, in frame order.
@@ -143,7 +149,8 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
             c *= glm::dvec4(f.shade, 1.0);
           }
         } else {
-          const auto s = texram::ideal_sample(*tex.texram, mat.sampler, f.uv.x, f.uv.y, f.lambda, shade);
+          const auto s =
+              texram::ideal_sample(*tex.texram, mat.sampler, f.uv.x, f.uv.y, f.lambda, shade);
           c = {s[0], s[1], s[2], s[3]};
         }
         (*ideal_rgba)[i] = c;
@@ -163,7 +170,8 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
       run.kind = "lowcost";
       attach(run, std::make_shared<tb::CccBilinearBlock>(tb::BlockOptions{}, tex.ccc));
       run.items = tb::bilinear_clut_load(*tex.ccc);
-      for (size_t i : frags) run.items.push_back(tb::bilinear_sample_item(records[i].u, records[i].v));
+      for (size_t i : frags)
+        run.items.push_back(tb::bilinear_sample_item(records[i].u, records[i].v));
     } else {
       run.kind = "trilinear";
       tb::TrilinearEnv env{tex.texram, mat.sampler, mat.name};
@@ -182,7 +190,8 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
       uint32_t c = static_cast<uint32_t>(run.result.outputs[k].f[0]);
       if (lowcost) {  // RGB888 -> RGBA8888; the low-cost unit has no eq. 5 stage: the host does it
         c = (c << 8) | 0xFF;
-        if (mat.sampler.combine != texram::Combine::kOne) c = texram::combine(c, mat.sampler, records[frags[k]].shade);
+        if (mat.sampler.combine != texram::Combine::kOne)
+          c = texram::combine(c, mat.sampler, records[frags[k]].shade);
       }
       out[frags[k]] = c;
     }

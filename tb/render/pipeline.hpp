@@ -43,14 +43,17 @@ class Pipeline {
   // same order). Returns RGBA8888 per fragment; ideal_rgba receives the ideal model's
   // unrounded colours (ideal only).
   std::vector<uint32_t> shade(const std::vector<host::FragmentRecord>& records,
-                              const std::vector<host::Fragment>* fragments, std::vector<glm::dvec4>* ideal_rgba,
+                              const std::vector<host::Fragment>* fragments,
+                              std::vector<glm::dvec4>* ideal_rgba,
                               const Progress& progress = nullptr);
 
   // Every unit built so far, with its stimulus and results (mipgen units first).
   std::vector<UnitRun>& units() { return units_; }
   const std::vector<UnitRun>& units() const { return units_; }
   // For each unit (same order), the fragment index of each of its outputs (mipgen: none).
-  const std::vector<std::vector<size_t>>& fragments_of_outputs() const { return fragment_of_output_; }
+  const std::vector<std::vector<size_t>>& fragments_of_outputs() const {
+    return fragment_of_output_;
+  }
 
  private:
   const host::Scene& scene_;

@@ -25,54 +25,67 @@ namespace tmu::render {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 Rgb8 rgb_of(uint32_t rgba) {
-  return {static_cast<uint8_t>(rgba >> 24), static_cast<uint8_t>(rgba >> 16), static_cast<uint8_t>(rgba >> 8)};
+  return {static_cast<uint8_t>(rgba >> 24), static_cast<uint8_t>(rgba >> 16),
+          static_cast<uint8_t>(rgba >> 8)};
 }
 
 // The frame band with the background and every fragment's colour.
-ImageRgb8 compose(const host::Scene& scene, const Band& band, const std::vector<host::FragmentRecord>& records,
+ImageRgb8 compose(const host::Scene& scene, const Band& band,
+                  const std::vector<host::FragmentRecord>& records,
                   const std::vector<uint32_t>& rgba) {
   ImageRgb8 img(band.frame_width, band.row_end - band.row_begin);
-  const Rgb8 bg = rgb_of(texram::rgba(static_cast<uint32_t>(std::lround(std::clamp(scene.background.r, 0.0, 1.0) * 255)),
-                                      static_cast<uint32_t>(std::lround(std::clamp(scene.background.g, 0.0, 1.0) * 255)),
-                                      static_cast<uint32_t>(std::lround(std::clamp(scene.background.b, 0.0, 1.0) * 255)),
-                                      255));
+  const Rgb8 bg = rgb_of(texram::rgba(
+      static_cast<uint32_t>(std::lround(std::clamp(scene.background.r, 0.0, 1.0) * 255)),
+      static_cast<uint32_t>(std::lround(std::clamp(scene.background.g, 0.0, 1.0) * 255)),
+      static_cast<uint32_t>(std::lround(std::clamp(scene.background.b, 0.0, 1.0) * 255)), 255));
   std::fill(img.pixels.begin(), img.pixels.end(), bg);
-  for (size_t i = 0; i < records.size(); ++i) img.at(records[i].x, records[i].y - band.row_begin) = rgb_of(rgba[i]);
+  for (size_t i = 0; i < records.size(); ++i)
+    img.at(records[i].x, records[i].y - band.row_begin) = rgb_of(rgba[i]);
   return img;
 }
 
 // A "hot" colour ramp for error maps: black, red, yellow, white as t goes 0 -> 1.
 Rgb8 hot(double t) {
-  auto c = [](double v) { return static_cast<uint8_t>(std::lround(255 * std::clamp(v, 0.0, 1.0))); };
+  auto c = [](double v) {
+    return static_cast<uint8_t>(std::lround(255 * std::clamp(v, 0.0, 1.0)));
+  };
   return {c(3 * t), c(3 * t - 1), c(3 * t - 2)};
 }
 
 std::string describe(const host::FragmentRecord& r, const host::Scene& scene) {
-  return fmt::format("material {} u={:.4f} v={:.4f} lambda={:.4f} shade=0x{:08X}", scene.materials[r.material].name,
-                     r.u / 256.0, r.v / 256.0, r.lambda / 256.0, r.shade);
+  return fmt::format("material {} u={:.4f} v={:.4f} lambda={:.4f} shade=0x{:08X}",
+                     scene.materials[r.material].name, r.u / 256.0, r.v / 256.0, r.lambda / 256.0,
+                     r.shade);
 }
 
 // The ideal engine's colours as a float image (EXR): what 8 bits cannot hold.
 void write_exr(const std::string& path, const Band& band, const host::Scene& scene,
-               const std::vector<host::FragmentRecord>& records, const std::vector<glm::dvec4>& ideal) {
-  std::vector<float> px(static_cast<size_t>(band.frame_width) * (band.row_end - band.row_begin) * 3);
+               const std::vector<host::FragmentRecord>& records,
+               const std::vector<glm::dvec4>& ideal) {
+  std::vector<float> px(static_cast<size_t>(band.frame_width) * (band.row_end - band.row_begin) *
+                        3);
   for (size_t i = 0; i < px.size(); i += 3) {
     px[i] = static_cast<float>(scene.background.r);
     px[i + 1] = static_cast<float>(scene.background.g);
     px[i + 2] = static_cast<float>(scene.background.b);
   }
   for (size_t k = 0; k < records.size(); ++k) {
-    const size_t at = 3 * (static_cast<size_t>(records[k].y - band.row_begin) * band.frame_width + records[k].x);
-    for (int c = 0; c < 3; ++c) px[at + static_cast<size_t>(c)] = static_cast<float>(ideal[k][c] / 255.0);
+    const size_t at =
+        3 * (static_cast<size_t>(records[k].y - band.row_begin) * band.frame_width + records[k].x);
+    for (int c = 0; c < 3; ++c)
+      px[at + static_cast<size_t>(c)] = static_cast<float>(ideal[k][c] / 255.0);
   }
   write_atomically(path, [&](const std::string& tmp) {
     auto out = OIIO::ImageOutput::create(path);
     if (!out) throw InputError(path, "", "no OpenEXR writer");
     OIIO::ImageSpec spec(band.frame_width, band.row_end - band.row_begin, 3, OIIO::TypeDesc::FLOAT);
-    if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, px.data()) || !out->close()) {
+    if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, px.data()) ||
+        !out->close()) {
       throw InputError(path, "", "cannot write: " + out->geterror());
     }
   });
@@ -80,11 +93,13 @@ void write_exr(const std::string& path, const Band& band, const host::Scene& sce
 
 }  // namespace
 
-int render_scene(const std::string& scene_path, const RenderOptions& o, std::ostream& log, RenderReport* report_out) {
+int render_scene(const std::string& scene_path, const RenderOptions& o, std::ostream& log,
+                 RenderReport* report_out) {
   const auto t_start = Clock::now();
   const host::Scene scene = host::load_scene(scene_path);
   const int width = scene.camera.width, height = scene.camera.height;
-  if (o.tiles > height) throw InputError("--tile", "", fmt::format("{} bands for a frame of {} rows", o.tiles, height));
+  if (o.tiles > height)
+    throw InputError("--tile", "", fmt::format("{} bands for a frame of {} rows", o.tiles, height));
   RenderReport rep;
   rep.scene = scene_path;
   rep.engine = std::string(name(o.level));
@@ -102,24 +117,28 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
   std::vector<host::FragmentRecord> records;
   if (!o.replay_trace.empty()) {
     if (o.level == Level::kIdeal || o.compare_ideal) {
-      throw InputError("--replay", "", "a trace holds fixed-point records; the ideal engine needs the front end");
+      throw InputError("--replay", "",
+                       "a trace holds fixed-point records; the ideal engine needs the front end");
     }
     const host::FragmentTrace trace = host::read_trace(o.replay_trace);
     if (trace.width != width || trace.height != height) {
       throw InputError(o.replay_trace, "frame",
-                       fmt::format("the trace is {}x{}, the scene {}x{}", trace.width, trace.height, width, height));
+                       fmt::format("the trace is {}x{}, the scene {}x{}", trace.width, trace.height,
+                                   width, height));
     }
     for (const host::FragmentRecord& r : trace.records) {
       if (r.y >= band.row_begin && r.y < band.row_end) records.push_back(r);
       if (r.material >= scene.materials.size()) {
-        throw InputError(o.replay_trace, "material", fmt::format("material {} is not in the scene", r.material));
+        throw InputError(o.replay_trace, "material",
+                         fmt::format("material {} is not in the scene", r.material));
       }
     }
     rep.raster.fragments = rep.raster.visible = records.size();
   } else {
     std::vector<host::Mesh> meshes;
     for (const host::Object& obj : scene.objects) meshes.push_back(host::make_mesh(obj));
-    fragments = host::rasterize(scene, meshes, pipe.texture_sizes(), band.row_begin, band.row_end, &rep.raster);
+    fragments = host::rasterize(scene, meshes, pipe.texture_sizes(), band.row_begin, band.row_end,
+                                &rep.raster);
     for (const host::Fragment& f : fragments) records.push_back(host::quantize(f));
   }
   rep.front_end_s = since(t);
@@ -144,9 +163,11 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
     rgba[static_cast<size_t>(o.inject_fault)] ^= 0x100u;  // a deliberate wrong bit (blue LSB)
   }
   for (const UnitRun& u : pipe.units()) {
-    UnitReport ur{u.name(), u.kind, static_cast<uint64_t>(u.result.outputs.size()), u.result.cycles, false,
-                  u.result.seconds, u.result.counters};
-    if (ur.cycles == 0) {  // untimed golden: the trilinear unit is memory-bound, one period per access
+    UnitReport ur{u.name(),         u.kind, static_cast<uint64_t>(u.result.outputs.size()),
+                  u.result.cycles,  false,  u.result.seconds,
+                  u.result.counters};
+    if (ur.cycles ==
+        0) {  // untimed golden: the trilinear unit is memory-bound, one period per access
       const auto accesses = tb::counter_value(u.result.counters, "accesses");
       if (accesses) {
         ur.cycles = *accesses + tb::counter_value(u.result.counters, "slow_accesses").value_or(0);
@@ -158,7 +179,8 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
 
   // The picture.
   const ImageRgb8 image = compose(scene, band, records, rgba);
-  const std::string stem = o.tiles > 1 ? fmt::format("render.tile-{}-of-{}", o.tile, o.tiles) : "render";
+  const std::string stem =
+      o.tiles > 1 ? fmt::format("render.tile-{}-of-{}", o.tile, o.tiles) : "render";
   const std::string png = (dir / (stem + ".png")).string();
   if (o.tiles > 1) {
     write_band(png, image, band);
@@ -180,12 +202,16 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
     c.against = std::string(name(*o.check));
     c.compared = records.size();
     ImageRgb8 heat = compose(scene, band, records, expected);
-    for (Rgb8& p : heat.pixels) p = {static_cast<uint8_t>(p.r / 4), static_cast<uint8_t>(p.g / 4), static_cast<uint8_t>(p.b / 4)};
+    for (Rgb8& p : heat.pixels)
+      p = {static_cast<uint8_t>(p.r / 4), static_cast<uint8_t>(p.g / 4),
+           static_cast<uint8_t>(p.b / 4)};
     size_t first = records.size();
     for (size_t i = 0; i < records.size(); ++i) {
       if (rgba[i] == expected[i]) continue;
       if (c.differing++ == 0) first = i;
-      if (c.first.size() < 5) c.first.push_back({records[i].x, records[i].y, describe(records[i], scene), expected[i], rgba[i]});
+      if (c.first.size() < 5)
+        c.first.push_back(
+            {records[i].x, records[i].y, describe(records[i], scene), expected[i], rgba[i]});
       int worst = 0;
       for (int ch = 0; ch < 4; ++ch) {
         worst = std::max(worst, std::abs(static_cast<int>(texram::channel(rgba[i], ch)) -
@@ -204,10 +230,11 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
           if (it == outs.end()) continue;
           UnitRun& unit = pipe.units()[u];
           const size_t k = static_cast<size_t>(it - outs.begin());
-          const tb::WaveWindow w = tb::dump_waveform(*unit.engine("rtl"), unit.items, tb::RunOptions{},
-                                                     unit.result.output_cycles[k], 64, 16, o.out_dir,
-                                                     stem + ".mismatch", unit.ports);
-          c.waveform = fmt::format("{} (unit {}, cycles {}..{}; gtkwave {})", w.fst, unit.name(), w.begin, w.end, w.gtkw);
+          const tb::WaveWindow w = tb::dump_waveform(
+              *unit.engine("rtl"), unit.items, tb::RunOptions{}, unit.result.output_cycles[k], 64,
+              16, o.out_dir, stem + ".mismatch", unit.ports);
+          c.waveform = fmt::format("{} (unit {}, cycles {}..{}; gtkwave {})", w.fst, unit.name(),
+                                   w.begin, w.end, w.gtkw);
           rep.files.push_back(w.fst);
         }
       }

@@ -15,14 +15,14 @@ namespace tmu::render {
 struct RenderOptions {
   Level level = Level::kGolden;
   std::string out_dir = "out";
-  int tile = 0, tiles = 1;        // render band `tile` of `tiles`
-  std::optional<Level> check;     // compare every fragment's result with this engine
-  bool compare_ideal = false;     // PSNR and error map of the image against the ideal engine's
-  bool waveform = false;          // with check and rtl: FST window around the first mismatch
-  bool progress = true;           // a progress bar on a terminal
-  std::string save_trace;         // write the fragment records here
-  std::string replay_trace;       // take the fragment records from here instead of the front end
-  int inject_fault = -1;          // flip a bit of this fragment's result (proves --check catches it)
+  int tile = 0, tiles = 1;     // render band `tile` of `tiles`
+  std::optional<Level> check;  // compare every fragment's result with this engine
+  bool compare_ideal = false;  // PSNR and error map of the image against the ideal engine's
+  bool waveform = false;       // with check and rtl: FST window around the first mismatch
+  bool progress = true;        // a progress bar on a terminal
+  std::string save_trace;      // write the fragment records here
+  std::string replay_trace;    // take the fragment records from here instead of the front end
+  int inject_fault = -1;       // flip a bit of this fragment's result (proves --check catches it)
 };
 
 // Renders; prints the text report to `log` and writes the files into out_dir. Returns the exit

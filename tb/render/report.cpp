@@ -7,7 +7,8 @@
 namespace tmu::render {
 namespace {
 
-uint64_t sum_counter(const std::vector<UnitReport>& units, const std::string& kind, const std::string& name) {
+uint64_t sum_counter(const std::vector<UnitReport>& units, const std::string& kind,
+                     const std::string& name) {
   uint64_t n = 0;
   for (const UnitReport& u : units) {
     if (u.kind == kind) n += tb::counter_value(u.counters, name).value_or(0);
@@ -15,7 +16,9 @@ uint64_t sum_counter(const std::vector<UnitReport>& units, const std::string& ki
   return n;
 }
 
-double per(uint64_t a, uint64_t b) { return b ? static_cast<double>(a) / static_cast<double>(b) : 0.0; }
+double per(uint64_t a, uint64_t b) {
+  return b ? static_cast<double>(a) / static_cast<double>(b) : 0.0;
+}
 
 }  // namespace
 
@@ -27,55 +30,66 @@ uint64_t RenderReport::unit_cycles() const {
 
 std::string RenderReport::text() const {
   std::string s = fmt::format("render {}: {}x{}", scene, band.frame_width, band.frame_height);
-  if (band.count > 1) s += fmt::format(", band {}/{} (rows {}-{})", band.index, band.count, band.row_begin, band.row_end);
+  if (band.count > 1)
+    s += fmt::format(", band {}/{} (rows {}-{})", band.index, band.count, band.row_begin,
+                     band.row_end);
   s += fmt::format(", engine {}\n", engine);
-  s += fmt::format("  front end: {} triangles, {} fragments, {} visible of {} pixels ({:.1f} %)\n", raster.triangles,
-                   raster.fragments, raster.visible, pixels, 100 * per(raster.visible, pixels));
+  s += fmt::format("  front end: {} triangles, {} fragments, {} visible of {} pixels ({:.1f} %)\n",
+                   raster.triangles, raster.fragments, raster.visible, pixels,
+                   100 * per(raster.visible, pixels));
   s += "  units built:\n";
-  s += fmt::format("    {:<32} {:>12} {:>12}  {:>10} {:>9}\n", "unit", "transactions", "cycles", "cycles/txn", "seconds");
+  s += fmt::format("    {:<32} {:>12} {:>12}  {:>10} {:>9}\n", "unit", "transactions", "cycles",
+                   "cycles/txn", "seconds");
   for (const UnitReport& u : units) {
-    s += fmt::format("    {:<32} {:>12} {:>12}{} {:>10.2f} {:>9.3f}\n", u.name, u.transactions, u.cycles,
-                     u.predicted ? "*" : " ", per(u.cycles, u.transactions), u.seconds);
+    s += fmt::format("    {:<32} {:>12} {:>12}{} {:>10.2f} {:>9.3f}\n", u.name, u.transactions,
+                     u.cycles, u.predicted ? "*" : " ", per(u.cycles, u.transactions), u.seconds);
   }
   if (units.empty()) s += "    (none: the ideal engine runs no hardware units)\n";
   for (const UnitReport& u : units) {
     if (u.predicted) {
-      s += "    * predicted by the page model (golden is untimed): one period per access, two on a fault\n";
+      s += "    * predicted by the page model (golden is untimed): one period per access, two on a "
+           "fault\n";
       break;
     }
   }
-  s += fmt::format("  cycles per pixel: {:.2f} ({} unit cycles, {} pixels)\n", per(unit_cycles(), pixels),
-                   unit_cycles(), pixels);
+  s += fmt::format("  cycles per pixel: {:.2f} ({} unit cycles, {} pixels)\n",
+                   per(unit_cycles(), pixels), unit_cycles(), pixels);
   const uint64_t accesses = sum_counter(units, "trilinear", "accesses");
   if (accesses) {
-    s += fmt::format("  memory: {} accesses, {} bank reads, {} page faults, {} accesses took two periods\n", accesses,
-                     sum_counter(units, "trilinear", "bank_reads"), sum_counter(units, "trilinear", "page_faults"),
-                     sum_counter(units, "trilinear", "slow_accesses"));
+    s += fmt::format(
+        "  memory: {} accesses, {} bank reads, {} page faults, {} accesses took two periods\n",
+        accesses, sum_counter(units, "trilinear", "bank_reads"),
+        sum_counter(units, "trilinear", "page_faults"),
+        sum_counter(units, "trilinear", "slow_accesses"));
   }
-  const uint64_t hits = sum_counter(units, "lowcost", "hits"), misses = sum_counter(units, "lowcost", "misses");
+  const uint64_t hits = sum_counter(units, "lowcost", "hits"),
+                 misses = sum_counter(units, "lowcost", "misses");
   if (hits + misses) {
-    s += fmt::format("  low-cost unit cache: {} hits, {} misses, {} prefetches, hit rate {:.1f} %\n", hits, misses,
-                     sum_counter(units, "lowcost", "prefetches"), 100 * per(hits, hits + misses));
+    s += fmt::format(
+        "  low-cost unit cache: {} hits, {} misses, {} prefetches, hit rate {:.1f} %\n", hits,
+        misses, sum_counter(units, "lowcost", "prefetches"), 100 * per(hits, hits + misses));
   }
-  s += fmt::format("  wall time: front end {:.3f} s, textures {:.3f} s, units {:.3f} s, total {:.3f} s\n", front_end_s,
-                   textures_s, units_s, total_s);
+  s += fmt::format(
+      "  wall time: front end {:.3f} s, textures {:.3f} s, units {:.3f} s, total {:.3f} s\n",
+      front_end_s, textures_s, units_s, total_s);
   if (check) {
     if (check->differing == 0) {
-      s += fmt::format("  check: MATCH: {} = {}, all {} fragments bit-exact\n", engine, check->against,
-                       check->compared);
+      s += fmt::format("  check: MATCH: {} = {}, all {} fragments bit-exact\n", engine,
+                       check->against, check->compared);
     } else {
-      s += fmt::format("  check: MISMATCH: {} of {} fragments differ between {} and {}\n", check->differing,
-                       check->compared, engine, check->against);
+      s += fmt::format("  check: MISMATCH: {} of {} fragments differ between {} and {}\n",
+                       check->differing, check->compared, engine, check->against);
       for (const Mismatch& m : check->first) {
-        s += fmt::format("    pixel ({}, {}): expected 0x{:08X}, got 0x{:08X}; fragment {}\n", m.x, m.y, m.expected,
-                         m.got, m.fragment);
+        s += fmt::format("    pixel ({}, {}): expected 0x{:08X}, got 0x{:08X}; fragment {}\n", m.x,
+                         m.y, m.expected, m.got, m.fragment);
       }
       if (!check->waveform.empty()) s += "    waveform: " + check->waveform + "\n";
     }
   }
   if (compare) {
-    s += fmt::format("  against ideal: PSNR {:.2f} dB, max error {:.3f}, mean {:.4f} (8-bit levels)\n", compare->psnr,
-                     compare->max_error, compare->mean_error);
+    s += fmt::format(
+        "  against ideal: PSNR {:.2f} dB, max error {:.3f}, mean {:.4f} (8-bit levels)\n",
+        compare->psnr, compare->max_error, compare->mean_error);
   }
   for (const std::string& f : files) s += "  wrote " + f + "\n";
   return s;
@@ -86,9 +100,12 @@ std::string RenderReport::json() const {
   j["scene"] = scene;
   j["engine"] = engine;
   j["frame"] = {{"width", band.frame_width}, {"height", band.frame_height}};
-  j["band"] = {{"index", band.index}, {"count", band.count}, {"rows", {band.row_begin, band.row_end}}};
+  j["band"] = {
+      {"index", band.index}, {"count", band.count}, {"rows", {band.row_begin, band.row_end}}};
   j["pixels"] = pixels;
-  j["front_end"] = {{"triangles", raster.triangles}, {"fragments", raster.fragments}, {"visible", raster.visible}};
+  j["front_end"] = {{"triangles", raster.triangles},
+                    {"fragments", raster.fragments},
+                    {"visible", raster.visible}};
   for (const UnitReport& u : units) {
     nlohmann::json c;
     for (const auto& [k, v] : u.counters) c[k] = v;
@@ -107,23 +124,32 @@ std::string RenderReport::json() const {
                  {"bank_reads", sum_counter(units, "trilinear", "bank_reads")},
                  {"page_faults", sum_counter(units, "trilinear", "page_faults")},
                  {"slow_accesses", sum_counter(units, "trilinear", "slow_accesses")}};
-  const uint64_t hits = sum_counter(units, "lowcost", "hits"), misses = sum_counter(units, "lowcost", "misses");
+  const uint64_t hits = sum_counter(units, "lowcost", "hits"),
+                 misses = sum_counter(units, "lowcost", "misses");
   j["cache"] = {{"hits", hits},
                 {"misses", misses},
                 {"prefetches", sum_counter(units, "lowcost", "prefetches")},
                 {"hit_rate", per(hits, hits + misses)}};
-  j["wall_time"] = {{"front_end", front_end_s}, {"textures", textures_s}, {"units", units_s}, {"total", total_s}};
+  j["wall_time"] = {
+      {"front_end", front_end_s}, {"textures", textures_s}, {"units", units_s}, {"total", total_s}};
   if (check) {
-    j["check"] = {{"against", check->against}, {"compared", check->compared}, {"differing", check->differing},
+    j["check"] = {{"against", check->against},
+                  {"compared", check->compared},
+                  {"differing", check->differing},
                   {"match", check->differing == 0}};
     for (const Mismatch& m : check->first) {
-      j["check"]["first"].push_back(
-          {{"x", m.x}, {"y", m.y}, {"expected", m.expected}, {"got", m.got}, {"fragment", m.fragment}});
+      j["check"]["first"].push_back({{"x", m.x},
+                                     {"y", m.y},
+                                     {"expected", m.expected},
+                                     {"got", m.got},
+                                     {"fragment", m.fragment}});
     }
     if (!check->waveform.empty()) j["check"]["waveform"] = check->waveform;
   }
   if (compare) {
-    j["compare_ideal"] = {{"psnr", compare->psnr}, {"max_error", compare->max_error}, {"mean_error", compare->mean_error}};
+    j["compare_ideal"] = {{"psnr", compare->psnr},
+                          {"max_error", compare->max_error},
+                          {"mean_error", compare->mean_error}};
   }
   j["files"] = files;
   return j.dump(2) + "\n";

@@ -26,7 +26,8 @@ Band band_of(int index, int count, int width, int height) {
 std::pair<int, int> parse_tile(const std::string& text) {
   int i = 0, n = 0;
   char slash = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d", &i, &slash, &n) != 3 || slash != '/' || n < 1 || i < 0 || i >= n) {
+  if (std::sscanf(text.c_str(), "%d%c%d", &i, &slash, &n) != 3 || slash != '/' || n < 1 || i < 0 ||
+      i >= n) {
     throw InputError("--tile", "", "'" + text + "' is not i/n with 0 <= i < n");
   }
   return {i, n};
@@ -40,7 +41,8 @@ void write_band(const std::string& path, const ImageRgb8& image, const Band& ban
     spec.attribute("tmu:band", fmt::format("{}/{}", band.index, band.count));
     spec.attribute("tmu:frame", fmt::format("{}x{}", band.frame_width, band.frame_height));
     spec.attribute("tmu:rows", fmt::format("{}-{}", band.row_begin, band.row_end));
-    if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) || !out->close()) {
+    if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) ||
+        !out->close()) {
       throw InputError(path, "", "cannot write image: " + out->geterror());
     }
   });
@@ -68,8 +70,9 @@ ImageRgb8 merge_bands(const std::vector<std::string>& paths) {
       count = b.count;
     }
     if (b.frame_width != width || b.frame_height != height || b.count != count) {
-      throw InputError(path, "tmu:frame", fmt::format("band of a {}x{} frame in {} bands, the first was {}x{} in {}",
-                                                      b.frame_width, b.frame_height, b.count, width, height, count));
+      throw InputError(path, "tmu:frame",
+                       fmt::format("band of a {}x{} frame in {} bands, the first was {}x{} in {}",
+                                   b.frame_width, b.frame_height, b.count, width, height, count));
     }
     if (spec.width != width || spec.height != b.row_end - b.row_begin) {
       throw InputError(path, "size", "image size does not match its band");
@@ -84,7 +87,8 @@ ImageRgb8 merge_bands(const std::vector<std::string>& paths) {
       img.pixels[i] = {p[0], p[1], p[2]};
     }
     if (!bands.emplace(b.row_begin, std::pair{b, std::move(img)}).second) {
-      throw InputError(path, "tmu:rows", fmt::format("rows {}-{} are given twice", b.row_begin, b.row_end));
+      throw InputError(path, "tmu:rows",
+                       fmt::format("rows {}-{} are given twice", b.row_begin, b.row_end));
     }
   }
   if (bands.empty()) throw InputError("merge", "", "no bands");
@@ -95,10 +99,12 @@ ImageRgb8 merge_bands(const std::vector<std::string>& paths) {
     if (first != next_row) {
       throw InputError("merge", "", fmt::format("rows {}-{} are missing", next_row, first));
     }
-    std::copy(img.pixels.begin(), img.pixels.end(), frame.pixels.begin() + static_cast<ptrdiff_t>(first) * width);
+    std::copy(img.pixels.begin(), img.pixels.end(),
+              frame.pixels.begin() + static_cast<ptrdiff_t>(first) * width);
     next_row = b.row_end;
   }
-  if (next_row != height) throw InputError("merge", "", fmt::format("rows {}-{} are missing", next_row, height));
+  if (next_row != height)
+    throw InputError("merge", "", fmt::format("rows {}-{} are missing", next_row, height));
   return frame;
 }
 

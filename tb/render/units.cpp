@@ -7,10 +7,14 @@ namespace tmu::render {
 
 std::string_view name(Level level) {
   switch (level) {
-    case Level::kIdeal: return "ideal";
-    case Level::kGolden: return "golden";
-    case Level::kHls: return "hls";
-    case Level::kRtl: return "rtl";
+    case Level::kIdeal:
+      return "ideal";
+    case Level::kGolden:
+      return "golden";
+    case Level::kHls:
+      return "hls";
+    case Level::kRtl:
+      return "rtl";
   }
   return "?";
 }
@@ -22,7 +26,9 @@ std::optional<Level> parse_level(std::string_view text) {
   return std::nullopt;
 }
 
-std::string engine_name(Level level) { return level == Level::kIdeal ? "golden" : std::string(name(level)); }
+std::string engine_name(Level level) {
+  return level == Level::kIdeal ? "golden" : std::string(name(level));
+}
 
 namespace {
 std::map<std::string, UnitCensus>& census_map() {
@@ -39,7 +45,8 @@ void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options) {
   ++c.built;
   unit.result = unit.engine(engine_name(level))->run(unit.items, options);
   if (!unit.result.error.empty()) {
-    throw std::runtime_error(unit.name() + " (" + engine_name(level) + ") failed: " + unit.result.error);
+    throw std::runtime_error(unit.name() + " (" + engine_name(level) +
+                             ") failed: " + unit.result.error);
   }
   c.cycles += unit.result.cycles;
 }

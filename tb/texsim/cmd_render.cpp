@@ -15,7 +15,8 @@ namespace tmu::texsim {
 void add_render_command(CLI::App& app, ExitCode& exit_code) {
   auto* cmd = app.add_subcommand(
       "render",
-      "Render a scene (scenes/README.md) through the texture unit: the host front end rasterizes it, every\n"
+      "Render a scene (scenes/README.md) through the texture unit: the host front end rasterizes "
+      "it, every\n"
       "fragment goes through the units its material's chain calls for, at the chosen model level.\n"
       "Writes OUT/render.png (and render.exr for ideal) and OUT/render.report.{json,txt}.");
   struct Args {
@@ -30,17 +31,24 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
       ->capture_default_str();
   cmd->add_option("--out", a->options.out_dir, "Output directory")->capture_default_str();
   cmd->add_option("--check", a->check,
-                  "Also render with this engine and compare every fragment bit for bit; exit 1 on a mismatch\n"
+                  "Also render with this engine and compare every fragment bit for bit; exit 1 on "
+                  "a mismatch\n"
                   "(writes render.check-diff.png, a heat map of the differing pixels)")
       ->check(CLI::IsMember({"golden", "hls", "rtl"}));
-  cmd->add_flag("--waveform", a->waveform, "With --check and --engine rtl: an FST window around the first mismatch");
+  cmd->add_flag("--waveform", a->waveform,
+                "With --check and --engine rtl: an FST window around the first mismatch");
   cmd->add_flag("--compare", a->compare,
-                "Compare with the ideal engine: PSNR, max error, render.compare-error.png (the flag takes 'ideal')");
-  cmd->add_option("--tile", a->tile, "Render band i of n of the frame (i/n); join the bands with texsim merge");
-  cmd->add_option("--save-trace", a->options.save_trace, "Write the fragment records (a trace) to this file");
-  cmd->add_option("--replay", a->options.replay_trace, "Take the fragment records from a trace instead of the front end")
+                "Compare with the ideal engine: PSNR, max error, render.compare-error.png (the "
+                "flag takes 'ideal')");
+  cmd->add_option("--tile", a->tile,
+                  "Render band i of n of the frame (i/n); join the bands with texsim merge");
+  cmd->add_option("--save-trace", a->options.save_trace,
+                  "Write the fragment records (a trace) to this file");
+  cmd->add_option("--replay", a->options.replay_trace,
+                  "Take the fragment records from a trace instead of the front end")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--inject-fault", a->options.inject_fault, "Flip a bit of fragment N's result (to see --check fail)");
+  cmd->add_option("--inject-fault", a->options.inject_fault,
+                  "Flip a bit of fragment N's result (to see --check fail)");
   cmd->add_flag("--no-progress", a->no_progress, "No progress bar");
   cmd->callback([a, &exit_code] {
     render::RenderOptions o = a->options;
@@ -53,11 +61,14 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
     exit_code.value = render::render_scene(a->scene, o, std::cout);
   });
 
-  auto* merge = app.add_subcommand("merge", "Join the bands of `texsim render --tile i/n` into one image");
+  auto* merge =
+      app.add_subcommand("merge", "Join the bands of `texsim render --tile i/n` into one image");
   auto out = std::make_shared<std::string>();
   auto bands = std::make_shared<std::vector<std::string>>();
   merge->add_option("output", *out, "The whole frame (written atomically)")->required();
-  merge->add_option("bands", *bands, "Every band's image, any order")->required()->check(CLI::ExistingFile);
+  merge->add_option("bands", *bands, "Every band's image, any order")
+      ->required()
+      ->check(CLI::ExistingFile);
   merge->callback([out, bands] {
     const ImageRgb8 frame = render::merge_bands(*bands);
     write_image(*out, frame);
