@@ -8,4 +8,4 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${TMU_BUILD_DIR:-$root/build}
 
 "$root/scripts/build.sh"
-"$build/tb/texsim" render "$root/scenes/default.json" --engine rtl --check golden --compare --out "$root/out"
+"$build/tb/texsim" render "$root/scenes/default.json" --engine rtl --check golden --compare ideal --out "$root/out"

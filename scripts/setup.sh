@@ -7,7 +7,7 @@ PACKAGES=(
   cmake ninja-build g++ ccache pkg-config git       # build
   clang-format                                       # style check
   verilator libsystemc-dev                           # rtl and hls models
-  libglm-dev libopenimageio-dev                      # ideal models, image I/O
+  libglm-dev libopenimageio-dev openimageio-tools    # ideal models, image I/O, idiff
   libcli11-dev nlohmann-json3-dev libfmt-dev         # texsim
   libgtest-dev libbenchmark-dev                      # tests, benchmarks
   yosys berkeley-abc                                 # synthesis check, cell counts

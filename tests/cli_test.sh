@@ -30,7 +30,7 @@ expect() {
 }
 
 for cmd in "" "cosim" "ccc" "ccc encode" "ccc decode" "ccc roundtrip" "formats" "pattern" "sample" "mipgen" \
-  "sweep"; do
+  "sweep" "render" "merge"; do
   # shellcheck disable=SC2086
   expect "help: texsim $cmd" 0 "Usage" -- "$texsim" $cmd --help
 done
@@ -99,6 +99,33 @@ expect "mipgen through rtl, checked against golden" 0 "MATCH" -- \
   "$texsim" mipgen tex.png levels --engine rtl --check golden
 [[ -s levels/level_0.png && -s levels/level_6.png ]] && pass "mipgen writes every level" || fail "mipgen levels"
 expect "mipgen of a size that is not a power of two" 2 "img.png: size" -- "$texsim" mipgen img.png lv
+
+# The renderer: verdicts, the exit code of a mismatch, scene errors, bands.
+expect "render rtl checked against golden, compared with ideal" 0 "MATCH: rtl = golden.*" -- \
+  "$texsim" render "$root/scenes/plain.json" --engine rtl --check golden --compare ideal --out r --no-progress
+[[ -s r/render.png && -s r/render.report.json && -s r/render.report.txt && -s r/render.compare-error.png ]] \
+  && pass "render writes the image, the report and the error map" || fail "render outputs"
+expect "render --check with an altered result exits 1" 1 "MISMATCH" -- \
+  "$texsim" render "$root/scenes/plain.json" --engine rtl --check golden --inject-fault 7 --out rf --no-progress
+[[ -s rf/render.check-diff.png ]] && pass "mismatch heat map written" || fail "no render.check-diff.png"
+expect "render --compare takes only ideal" 2 "compare" -- \
+  "$texsim" render "$root/scenes/plain.json" --compare golden --out rx
+expect "render a band out of range" 2 "tile" -- "$texsim" render "$root/scenes/plain.json" --tile 3/2 --out rx
+sed 's/"fov"/"fovv"/' "$root/scenes/plain.json" >typo.json
+expect "unknown scene key names file and field path" 2 "typo.json: camera.fovv" -- "$texsim" render typo.json --out rx
+printf '{ "camera": ' >cut.json
+expect "truncated scene names the file" 2 "cut.json" -- "$texsim" render cut.json --out rx
+[[ ! -e rx ]] && pass "no output after failed renders" || fail "rx written by a failed render"
+for band in 0 1 2; do
+  "$texsim" render "$root/scenes/plain.json" --tile $band/3 --out bands --no-progress >/dev/null
+done
+expect "merge three bands" 0 "merged 3 bands" -- "$texsim" merge whole.png bands/render.tile-{2,0,1}-of-3.png
+"$texsim" render "$root/scenes/plain.json" --out whole --no-progress >/dev/null
+# idiff exits 0 only when every pixel is equal (8-bit values: its 1e-6 threshold is exactness).
+idiff -q whole.png whole/render.png >/dev/null && pass "merged bands equal the whole frame" \
+  || fail "merged bands differ from the whole frame"
+! idiff -q whole.png bands/render.tile-0-of-3.png >/dev/null 2>&1 && pass "idiff tells different images apart" \
+  || fail "idiff cannot fail"
 
 echo "$failures failure(s)"
 exit $((failures > 0))

@@ -20,8 +20,8 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
       "fragment goes through the units its material's chain calls for, at the chosen model level.\n"
       "Writes OUT/render.png (and render.exr for ideal) and OUT/render.report.{json,txt}.");
   struct Args {
-    std::string scene, engine = "golden", check, tile;
-    bool compare = false, waveform = false, no_progress = false;
+    std::string scene, engine = "golden", check, compare, tile;
+    bool waveform = false, no_progress = false;
     render::RenderOptions options;
   };
   auto a = std::make_shared<Args>();
@@ -37,9 +37,10 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
       ->check(CLI::IsMember({"golden", "hls", "rtl"}));
   cmd->add_flag("--waveform", a->waveform,
                 "With --check and --engine rtl: an FST window around the first mismatch");
-  cmd->add_flag("--compare", a->compare,
-                "Compare with the ideal engine: PSNR, max error, render.compare-error.png (the "
-                "flag takes 'ideal')");
+  cmd->add_option("--compare", a->compare,
+                  "Compare the image with the ideal engine's: PSNR, max error, "
+                  "render.compare-error.png")
+      ->check(CLI::IsMember({"ideal"}));
   cmd->add_option("--tile", a->tile,
                   "Render band i of n of the frame (i/n); join the bands with texsim merge");
   cmd->add_option("--save-trace", a->options.save_trace,
@@ -54,7 +55,7 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
     render::RenderOptions o = a->options;
     o.level = *render::parse_level(a->engine);
     if (!a->check.empty()) o.check = render::parse_level(a->check);
-    o.compare_ideal = a->compare;
+    o.compare_ideal = !a->compare.empty();
     o.waveform = a->waveform;
     o.progress = !a->no_progress;
     if (!a->tile.empty()) std::tie(o.tile, o.tiles) = render::parse_tile(a->tile);
