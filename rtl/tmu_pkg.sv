@@ -135,6 +135,16 @@ package tmu_pkg;
   localparam int unsigned UnitCompFrac = 14;
   typedef logic signed [UnitCompW-1:0] unit_comp_t;
 
+  // ProbeLog2: UQ3.0, footprint assembly: log2 of a probe count N, 0..4 (1..16 probes)
+  localparam int unsigned ProbeLog2W = 3;
+  localparam int unsigned ProbeLog2Frac = 0;
+  typedef logic [ProbeLog2W-1:0] probe_log2_t;
+
+  // QRule: UQ1.0, footprint assembly: the edge length q, 0 the parallelogram's heights, 1 its shorter side
+  localparam int unsigned QRuleW = 1;
+  localparam int unsigned QRuleFrac = 0;
+  typedef logic [QRuleW-1:0] q_rule_t;
+
   // StatCount: UQ32.0, statistics counter (wraps)
   localparam int unsigned StatCountW = 32;
   localparam int unsigned StatCountFrac = 0;
@@ -157,6 +167,9 @@ package tmu_pkg;
 
   // TEXRAM memory banks
   localparam int unsigned Banks = 8;
+
+  // footprint assembly: at most 2^4 = 16 probes per fragment
+  localparam int unsigned MaxProbeLog2 = 4;
 
   // byte planes of a texel (true colour R G B A) or of a CCC block word
   localparam int unsigned Planes = 4;

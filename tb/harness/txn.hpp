@@ -12,7 +12,7 @@
 
 namespace tmu::tb {
 
-inline constexpr int kMaxFields = 8;
+inline constexpr int kMaxFields = 12;
 
 struct Txn {
   std::array<uint64_t, kMaxFields> f{};
