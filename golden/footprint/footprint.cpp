@@ -41,8 +41,20 @@ int32_t to_port(int64_t raw, texram::Border border) {
 }  // namespace
 
 uint32_t log2_table_entry(uint32_t index, const Widths& widths) {
-  const double x = 1.0 + (index + 0.5) / std::ldexp(1.0, widths.table_bits);
-  return static_cast<uint32_t>(std::lround(std::ldexp(std::log2(x), widths.log_frac)));
+  // The binary-logarithm digit recurrence on y = 1 + (index + 1/2) / 2^T in Q1.30: square, and
+  // a digit 1 halves y back into [1, 2). F + 1 digits, then rounded half up to F. Integer
+  // arithmetic, truncating at 30 bits, so that the RTL's elaboration computes the same table.
+  constexpr int kP = 30;
+  const int t = widths.table_bits;
+  uint64_t y = ((uint64_t{1} << (t + 1)) + 2 * uint64_t{index} + 1) << (kP - (t + 1));
+  uint32_t digits = 0;
+  for (int b = 0; b <= widths.log_frac; ++b) {
+    y = (y * y) >> kP;
+    const bool one = y >= (uint64_t{2} << kP);
+    if (one) y >>= 1;
+    digits = (digits << 1) | (one ? 1u : 0u);
+  }
+  return (digits + 1) >> 1;
 }
 
 Log2 log2_fixed(uint64_t x, const Widths& widths) {

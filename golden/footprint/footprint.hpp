@@ -11,8 +11,10 @@
 //   the triangle r1, r2), exact on the shifted components. The longer side is r1 when
 //   s1 >= s2, else r2; smax, smin the larger and smaller square.
 // - lg(x) for x > 0: e = index of the leading one, i = the T bits below it (zero-padded),
-//   lg = e * 2^F + LOG[i], with LOG[i] = round(2^F log2(1 + (i + 1/2) / 2^T)) (the midpoint of
-//   the interval: the error is centred). lg(0) is "zero" (minus infinity).
+//   lg = e * 2^F + LOG[i], with LOG[i] = 2^F log2(1 + (i + 1/2) / 2^T) (the midpoint of the
+//   interval: the error is centred), F + 1 digits of the digit recurrence in Q1.30 rounded
+//   half up (log2_table_entry: integer arithmetic the RTL repeats at elaboration; it equals the
+//   correctly rounded value for every T and F allowed, a test checks). lg(0) is "zero" (minus infinity).
 // - In G = F + 1 fraction bits (half a log step is exact), with raw values in units of
 //   2^-16 per square and 2^-16 for the area (the ports have 8 fraction bits):
 //     log2 |r_max|        = lg(smax) + 2 sh 2^F - 16 2^F
