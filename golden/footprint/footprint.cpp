@@ -41,12 +41,12 @@ int32_t to_port(int64_t raw, texram::Border border) {
 }  // namespace
 
 uint32_t log2_table_entry(uint32_t index, const Widths& widths) {
-  // The binary-logarithm digit recurrence on y = 1 + (index + 1/2) / 2^T in Q1.30: square, and
-  // a digit 1 halves y back into [1, 2). F + 1 digits, then rounded half up to F. Integer
+  // The binary-logarithm digit recurrence on y = 1 + index / 2^T in Q1.30: square, and a
+  // digit 1 halves y back into [1, 2). F + 1 digits, then rounded half up to F. Integer
   // arithmetic, truncating at 30 bits, so that the RTL's elaboration computes the same table.
   constexpr int kP = 30;
   const int t = widths.table_bits;
-  uint64_t y = ((uint64_t{1} << (t + 1)) + 2 * uint64_t{index} + 1) << (kP - (t + 1));
+  uint64_t y = ((uint64_t{1} << t) + uint64_t{index}) << (kP - t);
   uint32_t digits = 0;
   for (int b = 0; b <= widths.log_frac; ++b) {
     y = (y * y) >> kP;
@@ -62,9 +62,10 @@ Log2 log2_fixed(uint64_t x, const Widths& widths) {
   const int e = static_cast<int>(std::bit_width(x)) - 1;
   const int t = widths.table_bits;
   const uint64_t below = x - (uint64_t{1} << e);  // the bits under the leading one
-  const uint64_t index = e >= t ? below >> (e - t) : below << (t - e);
-  return {false, (int64_t{e} << widths.log_frac) +
-                     log2_table_entry(static_cast<uint32_t>(index), widths)};
+  // The mantissa rounded half up to T bits (index 2^T is the next power of two).
+  const uint64_t index = e > t ? ((below >> (e - t - 1)) + 1) >> 1 : below << (t - e);
+  return {false,
+          (int64_t{e} << widths.log_frac) + log2_table_entry(static_cast<uint32_t>(index), widths)};
 }
 
 Plan plan(const Request& r, const Config& config) {
@@ -75,8 +76,8 @@ Plan plan(const Request& r, const Config& config) {
   }
   const int64_t largest =
       std::max({magnitude(r.r1u), magnitude(r.r1v), magnitude(r.r2u), magnitude(r.r2v)});
-  const int sh = std::max(0, static_cast<int>(std::bit_width(static_cast<uint64_t>(largest))) -
-                                 w.deriv_bits);
+  const int sh =
+      std::max(0, static_cast<int>(std::bit_width(static_cast<uint64_t>(largest))) - w.deriv_bits);
   const int64_t a1u = shift_toward_zero(r.r1u, sh), a1v = shift_toward_zero(r.r1v, sh);
   const int64_t a2u = shift_toward_zero(r.r2u, sh), a2v = shift_toward_zero(r.r2v, sh);
   const auto s1 = static_cast<uint64_t>(a1u * a1u + a1v * a1v);
@@ -112,15 +113,18 @@ Plan plan(const Request& r, const Config& config) {
   }
   const int64_t kmax = config.log2_max_probes;
   int64_t k = unbounded ? kmax : std::min(kmax, (rho + (int64_t{1} << (g - 1))) >> g);
-  if (log2_rmax <= 0) k = 0;  // magnification: |r_max| <= 1 texel
+  // Magnification, |r_max| <= 1 texel, decided exactly on the square (the log carries the
+  // table's bias): smax 2^(2 sh) <= 2^16.
+  const int one = 2 * kPortFrac - 2 * sh;
+  if (one >= 0 && std::max(s1, s2) <= (uint64_t{1} << one)) k = 0;
   p.log2_n = static_cast<int>(k);
 
   const int64_t spread = log2_rmax - (k << g);
   const int64_t lambda_g = unbounded ? spread : std::max(log2_q, spread);
-  const int64_t lambda = g >= kPortFrac
-                             ? (lambda_g + (g > kPortFrac ? int64_t{1} << (g - kPortFrac - 1) : 0)) >>
-                                   (g - kPortFrac)
-                             : lambda_g << (kPortFrac - g);
+  const int64_t lambda =
+      g >= kPortFrac
+          ? (lambda_g + (g > kPortFrac ? int64_t{1} << (g - kPortFrac - 1) : 0)) >> (g - kPortFrac)
+          : lambda_g << (kPortFrac - g);
   p.lambda = static_cast<int32_t>(std::clamp<int64_t>(lambda, kLambdaMin, kLambdaMax));
   return p;
 }

@@ -10,11 +10,13 @@
 // - Squared lengths s1 = |r1|^2, s2 = |r2|^2 and the area a = |r1 x r2| (twice the area of
 //   the triangle r1, r2), exact on the shifted components. The longer side is r1 when
 //   s1 >= s2, else r2; smax, smin the larger and smaller square.
-// - lg(x) for x > 0: e = index of the leading one, i = the T bits below it (zero-padded),
-//   lg = e * 2^F + LOG[i], with LOG[i] = 2^F log2(1 + (i + 1/2) / 2^T) (the midpoint of the
-//   interval: the error is centred), F + 1 digits of the digit recurrence in Q1.30 rounded
-//   half up (log2_table_entry: integer arithmetic the RTL repeats at elaboration; it equals the
-//   correctly rounded value for every T and F allowed, a test checks). lg(0) is "zero" (minus infinity).
+// - lg(x) for x > 0: e = index of the leading one, i = the bits below it rounded half up to T
+//   bits (zero-padded when fewer; i = 2^T when the rounding carries), lg = e * 2^F + LOG[i]
+//   with LOG[i] = 2^F log2(1 + i / 2^T), i = 0 .. 2^T (2^T + 1 entries; LOG[2^T] = 2^F). The
+//   error is centred (at most half a table step) and exact powers of two are exact. LOG is
+//   F + 1 digits of the digit recurrence in Q1.30 rounded half up (log2_table_entry: integer
+//   arithmetic the RTL repeats at elaboration; it equals the correctly rounded value for
+//   every T and F allowed, a test checks). lg(0) is "zero" (minus infinity).
 // - In G = F + 1 fraction bits (half a log step is exact), with raw values in units of
 //   2^-16 per square and 2^-16 for the area (the ports have 8 fraction bits):
 //     log2 |r_max|        = lg(smax) + 2 sh 2^F - 16 2^F
@@ -26,8 +28,8 @@
 //   |r1 x r2| / |r1| and |r1 x r2| / |r2|: then min(|r1|, |r2|, d1, d2) = a / |r_max|.
 // - k = log2 N = round(rho) (half up: geometric rounding, ratio >= 2^(j + 1/2) gives N >= 2^(j+1)),
 //   clamped to 0..log2_max_probes; a = 0 (a line footprint, or one vector zero) gives the
-//   maximum. When |r_max| <= 1 texel (magnification) k = 0: the probes would share one
-//   bilinear cell. When both vectors are zero, k = 0.
+//   maximum. When |r_max| <= 1 texel (magnification: smax 2^(2 sh) <= 2^16, exactly) k = 0:
+//   the probes would share one bilinear cell. When both vectors are zero, k = 0.
 // - lambda = max(log2 q, log2 |r_max| - k) in G bits (when N is clamped, or rounded down, the
 //   probes grow so that N of them still cover the footprint's length), rounded half up to
 //   SQ6.8 and saturated; both vectors zero (or a = 0 with the max clamp unable to cover:
@@ -77,10 +79,10 @@ struct Config {
 
 // One fragment: raw port values.
 struct Request {
-  int32_t u = 0, v = 0;        // TexCoord SQ16.8
-  int32_t r1u = 0, r1v = 0;    // TexDeriv SQ16.8: d(u, v)/dx
-  int32_t r2u = 0, r2v = 0;    // TexDeriv SQ16.8: d(u, v)/dy
-  uint32_t shade = 0;          // I_d, RGBA8888
+  int32_t u = 0, v = 0;      // TexCoord SQ16.8
+  int32_t r1u = 0, r1v = 0;  // TexDeriv SQ16.8: d(u, v)/dx
+  int32_t r2u = 0, r2v = 0;  // TexDeriv SQ16.8: d(u, v)/dy
+  uint32_t shade = 0;        // I_d, RGBA8888
 };
 
 // lg(x) of the setup: zero, or e 2^F + LOG[i].
@@ -89,14 +91,14 @@ struct Log2 {
   int64_t value = 0;  // F fraction bits
 };
 Log2 log2_fixed(uint64_t x, const Widths& widths);
-// LOG[i], the table's entries (F fraction bits).
+// LOG[i], i = 0 .. 2^T, the table's entries (F fraction bits).
 uint32_t log2_table_entry(uint32_t index, const Widths& widths);
 
 // The setup's result: what the marcher sends down with each probe.
 struct Plan {
-  int log2_n = 0;         // k: N = 2^k probes
-  bool r2_longer = false; // the marching direction is r2 (else r1)
-  int32_t lambda = 0;     // Lod SQ6.8 of every probe
+  int log2_n = 0;          // k: N = 2^k probes
+  bool r2_longer = false;  // the marching direction is r2 (else r1)
+  int32_t lambda = 0;      // Lod SQ6.8 of every probe
 };
 Plan plan(const Request& request, const Config& config);
 

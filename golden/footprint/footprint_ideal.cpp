@@ -35,7 +35,7 @@ IdealPlan ideal_plan(glm::dvec2 r1, glm::dvec2 r2, const IdealConfig& config) {
     // Eigenvector of M M^T for `big`: (a12, big - a11) or (big - a22, a12), the better
     // conditioned one.
     glm::dvec2 axis = std::abs(big - a11) > std::abs(big - a22) ? glm::dvec2(a12, big - a11)
-                                                                 : glm::dvec2(big - a22, a12);
+                                                                : glm::dvec2(big - a22, a12);
     if (glm::length(axis) == 0) axis = {1, 0};  // a circle (or a point): any axis
     p.step = glm::normalize(axis) * longer;
   } else {
@@ -49,8 +49,9 @@ IdealPlan ideal_plan(glm::dvec2 r1, glm::dvec2 r2, const IdealConfig& config) {
   }
   const double log2_longer = std::log2(longer);
   const int kmax = config.log2_max_probes;
-  int k = q > 0 ? static_cast<int>(std::min<double>(kmax, std::floor(log2_longer - std::log2(q) + 0.5)))
-                : kmax;
+  int k =
+      q > 0 ? static_cast<int>(std::min<double>(kmax, std::floor(log2_longer - std::log2(q) + 0.5)))
+            : kmax;
   if (log2_longer <= 0) k = 0;
   p.log2_n = k;
   const double spread = log2_longer - k;
