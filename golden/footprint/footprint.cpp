@@ -21,9 +21,9 @@ int64_t shift_toward_zero(int32_t c, int sh) {
 }
 
 void check(const Widths& w) {
-  if (w.deriv_bits < 2 || w.deriv_bits > 24 || w.table_bits < 1 || w.table_bits > 10 ||
+  if (w.deriv_bits < 6 || w.deriv_bits > 24 || w.table_bits < 1 || w.table_bits > 10 ||
       w.log_frac < 1 || w.log_frac > 12) {
-    throw std::invalid_argument("footprint widths: deriv 2..24, table 1..10, log fraction 1..12");
+    throw std::invalid_argument("footprint widths: deriv 6..24, table 1..10, log fraction 1..12");
   }
 }
 
@@ -72,7 +72,7 @@ Plan plan(const Request& r, const Config& config) {
   const Widths& w = config.widths;
   check(w);
   if (config.log2_max_probes < 0 || config.log2_max_probes > formats::kMaxProbeLog2) {
-    throw std::invalid_argument("footprint: log2_max_probes must be 0..4");
+    throw std::invalid_argument("footprint: log2_max_probes must be 0..4");  // the RTL asserts it
   }
   const int64_t largest =
       std::max({magnitude(r.r1u), magnitude(r.r1v), magnitude(r.r2u), magnitude(r.r2v)});
@@ -113,10 +113,11 @@ Plan plan(const Request& r, const Config& config) {
   }
   const int64_t kmax = config.log2_max_probes;
   int64_t k = unbounded ? kmax : std::min(kmax, (rho + (int64_t{1} << (g - 1))) >> g);
-  // Magnification, |r_max| <= 1 texel, decided exactly on the square (the log carries the
-  // table's bias): smax 2^(2 sh) <= 2^16.
-  const int one = 2 * kPortFrac - 2 * sh;
-  if (one >= 0 && std::max(s1, s2) <= (uint64_t{1} << one)) k = 0;
+  // Probes at least half a texel apart: k <= floor(log2 |r_max|) + 1, exactly, from the
+  // leading one of smax (floor(log2 sqrt x) = floor(floor(log2 x) / 2)).
+  const int64_t e = static_cast<int64_t>(std::bit_width(std::max(s1, s2))) - 1;
+  const int64_t floor_log2_rmax = (e + 2 * sh - 2 * kPortFrac) >> 1;  // arithmetic: floor
+  k = std::min(k, std::max<int64_t>(0, floor_log2_rmax + 1));
   p.log2_n = static_cast<int>(k);
 
   const int64_t spread = log2_rmax - (k << g);

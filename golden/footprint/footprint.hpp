@@ -28,8 +28,10 @@
 //   |r1 x r2| / |r1| and |r1 x r2| / |r2|: then min(|r1|, |r2|, d1, d2) = a / |r_max|.
 // - k = log2 N = round(rho) (half up: geometric rounding, ratio >= 2^(j + 1/2) gives N >= 2^(j+1)),
 //   clamped to 0..log2_max_probes; a = 0 (a line footprint, or one vector zero) gives the
-//   maximum. When |r_max| <= 1 texel (magnification: smax 2^(2 sh) <= 2^16, exactly) k = 0:
-//   the probes would share one bilinear cell. When both vectors are zero, k = 0.
+//   maximum. Probes are at least half a texel apart (the spacing at which the bilinear
+//   reconstruction has nothing finer to show): k <= max(0, floor(log2 |r_max|) + 1), exact
+//   from the leading one of smax. So a footprint of at most one texel (magnification) gets
+//   one probe, and the cost grows smoothly with its length. Both vectors zero: k = 0.
 // - lambda = max(log2 q, log2 |r_max| - k) in G bits (when N is clamped, or rounded down, the
 //   probes grow so that N of them still cover the footprint's length), rounded half up to
 //   SQ6.8 and saturated; both vectors zero (or a = 0 with the max clamp unable to cover:
@@ -65,9 +67,11 @@ enum class QRule : uint8_t {
 
 // The setup's internal precision.
 struct Widths {
-  int deriv_bits = 12;  // D: significant bits of the derivative components, 2..24
-  int table_bits = 7;   // T: mantissa bits indexing the log2 table, 1..10
-  int log_frac = 8;     // F: fraction bits of a logarithm, 1..12
+  // D: significant bits of the derivative components, 6..24. The shorter vector vanishes only
+  // at ratios beyond 2^(D-1) >= 32, where N is at its maximum of 16 anyway.
+  int deriv_bits = 12;
+  int table_bits = 7;  // T: mantissa bits indexing the log2 table, 1..10
+  int log_frac = 8;    // F: fraction bits of a logarithm, 1..12
   friend bool operator==(const Widths&, const Widths&) = default;
 };
 

@@ -52,7 +52,8 @@ IdealPlan ideal_plan(glm::dvec2 r1, glm::dvec2 r2, const IdealConfig& config) {
   int k =
       q > 0 ? static_cast<int>(std::min<double>(kmax, std::floor(log2_longer - std::log2(q) + 0.5)))
             : kmax;
-  if (log2_longer <= 0) k = 0;
+  k = std::min(k,
+               std::max(0, static_cast<int>(std::floor(log2_longer)) + 1));  // >= 1/2 texel apart
   p.log2_n = k;
   const double spread = log2_longer - k;
   p.lambda = q > 0 ? std::max(std::log2(q), spread) : spread;
