@@ -120,7 +120,7 @@ TEST(FootprintTest, IsotropicFootprintIsOneTrilinearSample) {
 }
 
 // One vector zero, or both parallel: the footprint is a line, rho is infinite, so N is the
-// maximum (or the half-texel spacing's bound), the probes march along the non-zero (longer)
+// maximum (or the quarter-texel spacing's bound), the probes march along the non-zero (longer)
 // vector, and lambda is the spacing log2(|r| / N) so that the N probes cover the line.
 TEST(FootprintTest, LineFootprintsTakeTheMaximumProbes) {
   const struct {
@@ -137,7 +137,7 @@ TEST(FootprintTest, LineFootprintsTakeTheMaximumProbes) {
     for (int kmax = 0; kmax <= 4; ++kmax) {
       const Plan p = plan(request(5, 5, c.r1, c.r2), config(kmax));
       const double longer = std::max(glm::length(c.r1), glm::length(c.r2));
-      const int k = std::min(kmax, static_cast<int>(std::floor(std::log2(longer))) + 1);
+      const int k = std::min(kmax, static_cast<int>(std::floor(std::log2(longer))) + 2);
       EXPECT_EQ(p.log2_n, k);
       EXPECT_EQ(p.r2_longer, c.r2_longer);
       EXPECT_NEAR(lambda_of(p), std::log2(longer) - k, 0.02);
@@ -193,13 +193,13 @@ TEST(FootprintTest, ProbeCountRoundsAtTheGeometricMidpoint) {
   }
 }
 
-// Magnification: the longer vector under one texel. One probe, lambda = log2 |r_max| < 0:
+// Magnification: the longer vector under half a texel. One probe, lambda = log2 |r_max| < 0:
 // exactly the level-0 sample at the centre.
 TEST(FootprintTest, MagnificationIsOneProbe) {
   const TexramTexture t = smooth();
   const SamplerConfig s = sampler();
-  for (const auto& [r1, r2] : {std::pair{glm::dvec2{0.99, 0}, glm::dvec2{0, 0.05}},
-                               std::pair{glm::dvec2{0.5, 0.5}, glm::dvec2{0.01, -0.01}},
+  for (const auto& [r1, r2] : {std::pair{glm::dvec2{0.49, 0}, glm::dvec2{0, 0.05}},
+                               std::pair{glm::dvec2{0.3, 0.3}, glm::dvec2{0.01, -0.01}},
                                std::pair{glm::dvec2{0, 0.004}, glm::dvec2{0, 0}}}) {
     const Request q = request(30.2, 11.7, r1, r2);
     const Plan p = plan(q, config());
@@ -210,14 +210,14 @@ TEST(FootprintTest, MagnificationIsOneProbe) {
   }
 }
 
-// Probes stay at least half a texel apart: N <= 2^(floor(log2 |r_max|) + 1), so the cost grows
-// with the footprint's length in texels, not with its ratio alone (a thin footprint of one
-// texel does not take 16 probes). lambda then covers the spacing, log2 |r_max| - k.
-TEST(FootprintTest, ProbesAreAtLeastHalfATexelApart) {
+// Probes stay at least a quarter texel apart: N <= 2^(floor(log2 |r_max|) + 2), so the cost
+// grows with the footprint's length in texels, not with its ratio alone (a thin footprint of
+// one texel does not take 16 probes). lambda then covers the spacing, log2 |r_max| - k.
+TEST(FootprintTest, ProbesAreAtLeastAQuarterTexelApart) {
   const struct {
     double length;
     int k;
-  } cases[] = {{0.99, 0}, {1.0, 1}, {1.99, 1}, {2.0, 2}, {3.9, 2}, {4.0, 3}, {8.0, 4}};
+  } cases[] = {{0.49, 0}, {0.5, 1}, {0.99, 1}, {1.0, 2}, {1.99, 2}, {2.0, 3}, {4.0, 4}};
   for (const auto& c : cases) {
     const Plan p = plan(request(0, 0, {c.length, 0}, {0, 1.0 / 64}), config());
     EXPECT_EQ(p.log2_n, c.k) << c.length;

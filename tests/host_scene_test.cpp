@@ -315,9 +315,32 @@ TEST(HostSceneTest, MaterialRulesNameTheField) {
   expect_error(j, "materials", "at most 256");
 }
 
+TEST(HostSceneTest, FootprintParsesWithDefaultsAndChecksItsFields) {
+  Json j = base_scene();
+  j["materials"]["label"]["footprint"] = Json::object();
+  Scene s = parse(j);
+  ASSERT_TRUE(s.materials[1].footprint.has_value());
+  EXPECT_EQ(s.materials[1].footprint->log2_max_probes, 3);  // 8 probes
+  EXPECT_EQ(s.materials[1].footprint->q_rule, footprint::QRule::kHeights);
+  EXPECT_FALSE(s.materials[0].footprint.has_value());
+  j["materials"]["label"]["footprint"] = {{"max_probes", 16}, {"q", "sides"}};
+  s = parse(j);
+  EXPECT_EQ(s.materials[1].footprint->log2_max_probes, 4);
+  EXPECT_EQ(s.materials[1].footprint->q_rule, footprint::QRule::kSides);
+  j["materials"]["label"]["footprint"] = {{"max_probes", 6}};
+  expect_error(j, "materials.label.footprint.max_probes", "must be 1, 2, 4, 8 or 16");
+  j["materials"]["label"]["footprint"] = {{"max_probes", 32}};
+  expect_error(j, "materials.label.footprint.max_probes", "");
+  j["materials"]["label"]["footprint"] = {{"q", "diagonals"}};
+  expect_error(j, "materials.label.footprint.q", "heights");
+  j["materials"]["label"]["footprint"] = {{"probes", 4}};
+  expect_error(j, "materials.label.footprint.probes", "unknown key");
+  j["materials"]["label"]["footprint"] = 8;
+  expect_error(j, "materials.label.footprint", "");
+}
+
 TEST(HostSceneTest, ReservedEffectsAreNotImplementedYet) {
-  for (const char* effect :
-       {"footprint", "bump", "environment", "reflectance", "detail", "procedural"}) {
+  for (const char* effect : {"bump", "environment", "reflectance", "detail", "procedural"}) {
     Json j = base_scene();
     j["materials"]["label"][effect] = Json::object();
     expect_error(j, std::string("materials.label.") + effect,

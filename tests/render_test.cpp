@@ -44,8 +44,9 @@ bool has_kind(const RenderReport& r, const std::string& kind) {
 }
 
 // The plain scene and the everything scene have the same frame and objects; the plain one
-// uses plain textures only, so no mipmap generator and no low-cost unit is built or clocked,
-// and it takes fewer simulated cycles. (Cycles, not wall time: tests never time themselves.)
+// uses plain textures only, so no mipmap generator, low-cost unit or footprint unit is built
+// or clocked, and it takes fewer simulated cycles. (Cycles, not wall time: tests never time
+// themselves.)
 TEST(RenderTest, PlainSceneBuildsAndClocksOnlyTheTrilinearUnits) {
   reset_census();
   const RenderReport plain = render("plain.json", options(Level::kRtl, "plain"));
@@ -53,6 +54,8 @@ TEST(RenderTest, PlainSceneBuildsAndClocksOnlyTheTrilinearUnits) {
   EXPECT_EQ(census("mipgen").cycles, 0u);
   EXPECT_EQ(census("lowcost").built, 0u);
   EXPECT_EQ(census("lowcost").cycles, 0u);
+  EXPECT_EQ(census("footprint").built, 0u);
+  EXPECT_EQ(census("footprint").cycles, 0u);
   EXPECT_GT(census("trilinear").built, 0u);
   for (const UnitReport& u : plain.units) EXPECT_EQ(u.kind, "trilinear") << u.name;
 
@@ -60,7 +63,8 @@ TEST(RenderTest, PlainSceneBuildsAndClocksOnlyTheTrilinearUnits) {
   const RenderReport all = render("everything.json", options(Level::kRtl, "everything"));
   EXPECT_GT(census("mipgen").cycles, 0u);
   EXPECT_GT(census("lowcost").cycles, 0u);
-  EXPECT_TRUE(has_kind(all, "mipgen") && has_kind(all, "lowcost") && has_kind(all, "trilinear"));
+  EXPECT_GT(census("footprint").cycles, 0u);
+  EXPECT_TRUE(has_kind(all, "mipgen") && has_kind(all, "lowcost") && has_kind(all, "footprint"));
   EXPECT_EQ(plain.pixels, all.pixels);
   EXPECT_LT(plain.unit_cycles(), all.unit_cycles());
   std::cout << "plain scene: " << plain.unit_cycles()

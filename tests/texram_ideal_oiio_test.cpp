@@ -9,8 +9,8 @@
 //   width f (in texels) at the first level m where f <= 1, it blends levels m - 1 and m by
 //   2f - 1. Our lambda = (m - 1) + t blends them by t, so we pass the derivative that gives
 //   f = (1 + t) / 2 at level m. Square textures only: OIIO uses min(width, height) per level.
-// - Wrap modes: WrapPeriodic = wrap, WrapClamp = clamp, WrapMirror = mirror, WrapBlack =
-//   border with a (0, 0, 0, 0) border colour. Same texel-centre convention, (i + 0.5) / w.
+// - Wrap modes: oiio_wrap() (texram/oiio_texture.hpp), WrapBlack = border with a (0, 0, 0, 0)
+//   border colour. Same texel-centre convention, (i + 0.5) / w.
 //
 // Tolerance: both compute the same weighted sums, OIIO in single precision on texels / 255
 // stored as float; float rounding of the data and weights stays far below 0.01 of a level.
@@ -24,6 +24,7 @@
 #include <random>
 
 #include "common/test_patterns.hpp"
+#include "texram/oiio_texture.hpp"
 #include "texram/trilinear_ideal.hpp"
 
 namespace tmu::texram {
@@ -66,20 +67,6 @@ float derivative_for(double lambda, int top, int w) {
   const double m = std::ceil(lambda);                    // second level
   const double t = lambda - (m - 1);                     // blend, (0, 1]
   return static_cast<float>((1 + t) * std::ldexp(1.0, static_cast<int>(m) - 1) / w);
-}
-
-OIIO::TextureOpt::Wrap oiio_wrap(Border b) {
-  switch (b) {
-    case Border::kWrap:
-      return OIIO::TextureOpt::WrapPeriodic;
-    case Border::kClamp:
-      return OIIO::TextureOpt::WrapClamp;
-    case Border::kMirror:
-      return OIIO::TextureOpt::WrapMirror;
-    case Border::kBorder:
-      return OIIO::TextureOpt::WrapBlack;
-  }
-  return OIIO::TextureOpt::WrapDefault;
 }
 
 TEST(TexramIdealOiioTest, IdealTrilinearMatchesOpenImageIO) {

@@ -113,11 +113,11 @@ Plan plan(const Request& r, const Config& config) {
   }
   const int64_t kmax = config.log2_max_probes;
   int64_t k = unbounded ? kmax : std::min(kmax, (rho + (int64_t{1} << (g - 1))) >> g);
-  // Probes at least half a texel apart: k <= floor(log2 |r_max|) + 1, exactly, from the
+  // Probes at least a quarter texel apart: k <= floor(log2 |r_max|) + 2, exactly, from the
   // leading one of smax (floor(log2 sqrt x) = floor(floor(log2 x) / 2)).
   const int64_t e = static_cast<int64_t>(std::bit_width(std::max(s1, s2))) - 1;
   const int64_t floor_log2_rmax = (e + 2 * sh - 2 * kPortFrac) >> 1;  // arithmetic: floor
-  k = std::min(k, std::max<int64_t>(0, floor_log2_rmax + 1));
+  k = std::min(k, std::max<int64_t>(0, floor_log2_rmax + 2));
   p.log2_n = static_cast<int>(k);
 
   const int64_t spread = log2_rmax - (k << g);

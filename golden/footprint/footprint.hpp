@@ -28,10 +28,10 @@
 //   |r1 x r2| / |r1| and |r1 x r2| / |r2|: then min(|r1|, |r2|, d1, d2) = a / |r_max|.
 // - k = log2 N = round(rho) (half up: geometric rounding, ratio >= 2^(j + 1/2) gives N >= 2^(j+1)),
 //   clamped to 0..log2_max_probes; a = 0 (a line footprint, or one vector zero) gives the
-//   maximum. Probes are at least half a texel apart (the spacing at which the bilinear
-//   reconstruction has nothing finer to show): k <= max(0, floor(log2 |r_max|) + 1), exact
-//   from the leading one of smax. So a footprint of at most one texel (magnification) gets
-//   one probe, and the cost grows smoothly with its length. Both vectors zero: k = 0.
+//   maximum. Probes are at least a quarter texel apart: k <= max(0, floor(log2 |r_max|) + 2),
+//   exact from the leading one of smax. Closer probes add cost and almost nothing else
+//   (docs/footprint.md measures it); a footprint under half a texel (magnification) gets one
+//   probe, and the cost grows smoothly with the footprint's length. Both vectors zero: k = 0.
 // - lambda = max(log2 q, log2 |r_max| - k) in G bits (when N is clamped, or rounded down, the
 //   probes grow so that N of them still cover the footprint's length), rounded half up to
 //   SQ6.8 and saturated; both vectors zero (or a = 0 with the max clamp unable to cover:

@@ -53,7 +53,7 @@ IdealPlan ideal_plan(glm::dvec2 r1, glm::dvec2 r2, const IdealConfig& config) {
       q > 0 ? static_cast<int>(std::min<double>(kmax, std::floor(log2_longer - std::log2(q) + 0.5)))
             : kmax;
   k = std::min(k,
-               std::max(0, static_cast<int>(std::floor(log2_longer)) + 1));  // >= 1/2 texel apart
+               std::max(0, static_cast<int>(std::floor(log2_longer)) + 2));  // >= 1/4 texel apart
   p.log2_n = k;
   const double spread = log2_longer - k;
   p.lambda = q > 0 ? std::max(std::log2(q), spread) : spread;

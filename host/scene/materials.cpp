@@ -17,8 +17,8 @@ namespace tmu::host {
 namespace {
 
 // Material keys reserved for the blocks that do not exist yet.
-constexpr std::string_view kReservedEffects[] = {"footprint",   "bump",   "environment",
-                                                 "reflectance", "detail", "procedural"};
+constexpr std::string_view kReservedEffects[] = {"bump", "environment", "reflectance", "detail",
+                                                 "procedural"};
 
 // The TEXRAM holds power-of-two sides up to 2^10 (000 §2, formats.def MaxMipLog2); the CCC
 // low-cost unit reads level 0 only and takes any side a TexSize holds.
@@ -123,6 +123,20 @@ texram::Border parse_border_mode(const JsonNode& node) {
   return *texram::parse_border(node.string());
 }
 
+// "footprint": {"max_probes": 1|2|4|8|16, "q": "heights"|"sides"}.
+footprint::Config parse_footprint(const JsonNode& node) {
+  node.expect_object();
+  node.allow_keys({"max_probes", "q"});
+  footprint::Config c;
+  if (auto n = node.find("max_probes")) {
+    const int64_t probes = n->integer(1, int64_t{1} << formats::kMaxProbeLog2);
+    if (!std::has_single_bit(static_cast<uint64_t>(probes))) n->fail("must be 1, 2, 4, 8 or 16");
+    c.log2_max_probes = std::countr_zero(static_cast<uint64_t>(probes));
+  }
+  if (auto q = node.find("q")) c.q_rule = *footprint::parse_q_rule(q->one_of({"heights", "sides"}));
+  return c;
+}
+
 Material parse_material(const JsonNode& node, const std::string& name, const std::string& folder) {
   node.expect_object();
   for (std::string_view effect : kReservedEffects) {
@@ -130,7 +144,7 @@ Material parse_material(const JsonNode& node, const std::string& name, const std
       e->fail(fmt::format("the {} effect is not implemented yet", effect));
   }
   node.allow_keys({"texture", "config", "channel", "filter", "border", "border_colour", "combine",
-                   "constant", "unit", "mipmaps"});
+                   "constant", "unit", "mipmaps", "footprint"});
   Material m;
   m.name = name;
   m.texture = parse_texture(node.at("texture"), folder);
@@ -189,6 +203,11 @@ Material parse_material(const JsonNode& node, const std::string& name, const std
       }
       m.mipmaps = Material::Mipmaps::kMipgen;
     }
+  }
+
+  if (auto f = node.find("footprint")) {
+    if (m.unit == Material::Unit::kLowcost) f->fail("footprint assembly drives the trilinear unit");
+    m.footprint = parse_footprint(*f);
   }
 
   // Sides: what the unit that samples the texture can hold.

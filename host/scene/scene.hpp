@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "footprint/footprint.hpp"
 #include "texram/sampler_config.hpp"
 
 namespace tmu::host {
@@ -45,6 +46,8 @@ struct Material {
   Unit unit = Unit::kTrilinear;
   enum class Mipmaps { kHost, kMipgen };
   Mipmaps mipmaps = Mipmaps::kHost;
+  // Footprint assembly (000 §10) in front of the trilinear unit; absent: isotropic sampling.
+  std::optional<footprint::Config> footprint;
 };
 
 struct Transform {

@@ -4,6 +4,7 @@
 
 #include "blocks/ccc_bilinear_block.hpp"
 #include "blocks/ccc_decoder_block.hpp"
+#include "blocks/footprint_block.hpp"
 #include "blocks/mipgen_block.hpp"
 #include "blocks/trilinear_block.hpp"
 
@@ -18,7 +19,10 @@ std::vector<BlockInfo> block_list() {
            "writes"},
           {"trilinear",
            "TEXRAM trilinear unit (000 §2, §5, §6): 8-bank mipmap, border modes, texel "
-           "configurations, eq. 5"}};
+           "configurations, eq. 5"},
+          {"footprint",
+           "Footprint assembly (000 §10): N trilinear probes along the longer derivative, "
+           "averaged"}};
 }
 
 std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& options) {
@@ -26,6 +30,7 @@ std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& o
   if (name == "ccc-bilinear") return std::make_unique<CccBilinearBlock>(options);
   if (name == "mipgen") return std::make_unique<MipgenBlock>(options);
   if (name == "trilinear") return std::make_unique<TrilinearBlock>(options);
+  if (name == "footprint") return std::make_unique<FootprintBlock>(options);
   std::string known;
   for (const BlockInfo& b : block_list()) known += (known.empty() ? "" : ", ") + b.name;
   throw std::invalid_argument("unknown block '" + name + "' (blocks: " + known + ")");

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "footprint/footprint.hpp"
 #include "harness/block.hpp"
 #include "texram/sampler_config.hpp"
 
@@ -35,6 +36,13 @@ struct BlockOptions {
   std::string tri_image;
   // The unit's widths; the rtl engine is verilated at 8,8,8 only.
   texram::Widths tri_widths;
+  // footprint: the trilinear unit's environment as above (tri_*), and the setup's
+  // configuration: each field that is set overrides its draw from the seed.
+  std::optional<int> fp_log2_max_probes;  // 0..4: at most 2^this probes
+  std::optional<footprint::QRule> fp_q_rule;
+  // The setup's widths D, T, F; the rtl engine is verilated at a few (rtl/CMakeLists.txt:
+  // TMU_FOOTPRINT_VARIANTS).
+  footprint::Widths fp_widths;
 };
 
 struct BlockInfo {

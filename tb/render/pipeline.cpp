@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "blocks/ccc_bilinear_block.hpp"
+#include "blocks/footprint_block.hpp"
 #include "blocks/mipgen_block.hpp"
 #include "blocks/trilinear_block.hpp"
 #include "ccc/ccc_cache_bilinear.hpp"
@@ -13,6 +14,7 @@
 #include "common/error.hpp"
 #include "common/image.hpp"
 #include "common/test_patterns.hpp"
+#include "footprint/footprint_ideal.hpp"
 #include "texram/mipgen_stream.hpp"
 #include "texram/trilinear.hpp"
 #include "texram/trilinear_ideal.hpp"
@@ -148,6 +150,12 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
           if (mat.sampler.combine == texram::Combine::kShade) {
             c *= glm::dvec4(f.shade, 1.0);
           }
+        } else if (mat.footprint) {
+          const footprint::IdealConfig ic{mat.footprint->log2_max_probes, mat.footprint->q_rule,
+                                          footprint::Direction::kLongerSide};
+          const auto s =
+              footprint::ideal_sample(*tex.texram, mat.sampler, ic, f.uv, f.r1, f.r2, shade);
+          c = {s[0], s[1], s[2], s[3]};
         } else {
           const auto s =
               texram::ideal_sample(*tex.texram, mat.sampler, f.uv.x, f.uv.y, f.lambda, shade);
@@ -172,6 +180,18 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
       run.items = tb::bilinear_clut_load(*tex.ccc);
       for (size_t i : frags)
         run.items.push_back(tb::bilinear_sample_item(records[i].u, records[i].v));
+    } else if (mat.footprint) {
+      run.kind = "footprint";
+      tb::FootprintEnv env{{tex.texram, mat.sampler, mat.name}, *mat.footprint};
+      attach(run, std::make_shared<tb::FootprintBlock>(tb::BlockOptions{}, env));
+      for (size_t i = 0; i < tex.texram->clut.size(); ++i) {
+        run.items.push_back(tb::footprint_clut_item(static_cast<uint8_t>(i), tex.texram->clut[i]));
+      }
+      for (size_t i : frags) {
+        const host::FragmentRecord& r = records[i];
+        run.items.push_back(
+            tb::footprint_sample_item(r.u, r.v, r.r1[0], r.r1[1], r.r2[0], r.r2[1], r.shade));
+      }
     } else {
       run.kind = "trilinear";
       tb::TrilinearEnv env{tex.texram, mat.sampler, mat.name};

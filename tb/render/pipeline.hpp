@@ -4,6 +4,8 @@
 //   mipmaps "host"   : host pyramid                 -> trilinear (or lowcost)
 //   mipmaps "mipgen" : mipgen unit fills the banks  -> trilinear
 //   unit "lowcost"   : the CCC low-cost unit (bilinear at level 0), then eq. 5 on the host
+//   "footprint"      : the footprint unit (000 §10): N trilinear probes per fragment, averaged;
+//                      it holds its own trilinear unit (host or mipgen pyramid as above)
 #pragma once
 
 #include <functional>

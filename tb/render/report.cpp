@@ -16,6 +16,17 @@ uint64_t sum_counter(const std::vector<UnitReport>& units, const std::string& ki
   return n;
 }
 
+// The TEXRAM's banks: read by the trilinear units and by the footprint units' own.
+uint64_t memory_counter(const std::vector<UnitReport>& units, const std::string& name) {
+  return sum_counter(units, "trilinear", name) + sum_counter(units, "footprint", name);
+}
+
+uint64_t footprint_transactions(const std::vector<UnitReport>& units) {
+  uint64_t n = 0;
+  for (const UnitReport& u : units) n += u.kind == "footprint" ? u.transactions : 0;
+  return n;
+}
+
 double per(uint64_t a, uint64_t b) {
   return b ? static_cast<double>(a) / static_cast<double>(b) : 0.0;
 }
@@ -54,13 +65,18 @@ std::string RenderReport::text() const {
   }
   s += fmt::format("  cycles per pixel: {:.2f} ({} unit cycles, {} pixels)\n",
                    per(unit_cycles(), pixels), unit_cycles(), pixels);
-  const uint64_t accesses = sum_counter(units, "trilinear", "accesses");
+  const uint64_t accesses = memory_counter(units, "accesses");
   if (accesses) {
     s += fmt::format(
         "  memory: {} accesses, {} bank reads, {} page faults, {} accesses took two periods\n",
-        accesses, sum_counter(units, "trilinear", "bank_reads"),
-        sum_counter(units, "trilinear", "page_faults"),
-        sum_counter(units, "trilinear", "slow_accesses"));
+        accesses, memory_counter(units, "bank_reads"), memory_counter(units, "page_faults"),
+        memory_counter(units, "slow_accesses"));
+  }
+  if (const uint64_t fragments = footprint_transactions(units)) {
+    const uint64_t probes = sum_counter(units, "footprint", "probes");
+    s += fmt::format(
+        "  footprint assembly: {} probes for {} fragments, {:.2f} probes per fragment\n", probes,
+        fragments, per(probes, fragments));
   }
   const uint64_t hits = sum_counter(units, "lowcost", "hits"),
                  misses = sum_counter(units, "lowcost", "misses");
@@ -120,10 +136,15 @@ std::string RenderReport::json() const {
   if (units.empty()) j["units"] = nlohmann::json::array();
   j["cycles"] = unit_cycles();
   j["cycles_per_pixel"] = per(unit_cycles(), pixels);
-  j["memory"] = {{"accesses", sum_counter(units, "trilinear", "accesses")},
-                 {"bank_reads", sum_counter(units, "trilinear", "bank_reads")},
-                 {"page_faults", sum_counter(units, "trilinear", "page_faults")},
-                 {"slow_accesses", sum_counter(units, "trilinear", "slow_accesses")}};
+  j["memory"] = {{"accesses", memory_counter(units, "accesses")},
+                 {"bank_reads", memory_counter(units, "bank_reads")},
+                 {"page_faults", memory_counter(units, "page_faults")},
+                 {"slow_accesses", memory_counter(units, "slow_accesses")}};
+  const uint64_t fp_fragments = footprint_transactions(units),
+                 fp_probes = sum_counter(units, "footprint", "probes");
+  j["footprint"] = {{"fragments", fp_fragments},
+                    {"probes", fp_probes},
+                    {"probes_per_fragment", per(fp_probes, fp_fragments)}};
   const uint64_t hits = sum_counter(units, "lowcost", "hits"),
                  misses = sum_counter(units, "lowcost", "misses");
   j["cache"] = {{"hits", hits},

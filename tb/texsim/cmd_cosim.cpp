@@ -1,6 +1,8 @@
 // `texsim cosim BLOCK`: golden vs hls vs rtl, bit for bit, under random back-pressure.
 #include <fmt/format.h>
 
+#include <bit>
+#include <cstdio>
 #include <iostream>
 
 #include "blocks/registry.hpp"
@@ -26,6 +28,9 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
     std::string config, channel, filter, border_u, border_v, border_colour, combine, constant,
         widths;
     std::optional<int> log2_w, log2_h;
+    // footprint overrides; empty: drawn from the seed
+    std::optional<int> max_probes;
+    std::string q_rule, fp_widths;
   };
   auto args = std::make_shared<Args>();
   cmd->add_option("block", args->block, "Block to co-simulate")->required();
@@ -106,6 +111,18 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
       ->check(CLI::ExistingFile);
   tri->add_option("--widths", args->widths,
                   "internal widths S,W,L (hls and golden; rtl is verilated at 8,8,8)");
+  // footprint: the trilinear options above, and the setup's.
+  auto* fp = cmd->add_option_group(
+      "footprint", "footprint: the trilinear options above, and the setup's (else from the seed)");
+  fp->add_option("--max-probes", args->max_probes,
+                 "at most N probes per fragment: 1 | 2 | 4 | 8 | 16")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+  fp->add_option("--q-rule", args->q_rule,
+                 "the edge length q: heights (of the parallelogram) | sides (the shorter)")
+      ->check(CLI::IsMember({"heights", "sides"}));
+  fp->add_option("--fp-widths", args->fp_widths,
+                 "setup widths D,T,F: derivative, log2 table and log fraction bits (rtl is "
+                 "verilated at 12,7,8 and a few others)");
 
   cmd->callback([args, &exit_code] {
     args->cosim.engines.clear();
@@ -131,6 +148,20 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
     if (!args->widths.empty()) b.tri_widths = parse_widths_option("--widths", args->widths);
     b.tri_log2_w = args->log2_w;
     b.tri_log2_h = args->log2_h;
+    if (args->max_probes)
+      b.fp_log2_max_probes = std::countr_zero(static_cast<unsigned>(*args->max_probes));
+    if (!args->q_rule.empty()) b.fp_q_rule = footprint::parse_q_rule(args->q_rule);
+    if (!args->fp_widths.empty()) {
+      footprint::Widths& w = b.fp_widths;
+      if (std::sscanf(args->fp_widths.c_str(), "%d,%d,%d", &w.deriv_bits, &w.table_bits,
+                      &w.log_frac) != 3 ||
+          w.deriv_bits < 6 || w.deriv_bits > 24 || w.table_bits < 1 || w.table_bits > 10 ||
+          w.log_frac < 1 || w.log_frac > 12) {
+        throw CLI::ValidationError(
+            "--fp-widths",
+            "'" + args->fp_widths + "' is not D,T,F with D 6..24, T 1..10, F 1..12 like 12,7,8");
+      }
+    }
     const auto block = tb::make_block(args->block, args->block_options);
     const tb::CosimResult r = tb::run_cosim(*block, args->cosim, std::cout);
     exit_code.value = r.pass ? 0 : 1;

@@ -1,6 +1,8 @@
-// `texsim sweep BLOCK`: what accuracy costs, side by side. For each width setting: the error
-// against the ideal model, the PSNR of a rendered test pattern, simulation speed, and the Yosys
-// cell count and logic depth of the RTL at that setting.
+// `texsim sweep BLOCK`: what accuracy costs, side by side. trilinear: for each width setting,
+// the error against the ideal model, the PSNR of a rendered test pattern, simulation speed, and
+// the Yosys cell count and logic depth of the RTL at that setting. footprint: footprint assembly
+// against isotropic trilinear and other anisotropic filters on a scene (sweep_footprint.hpp).
+// footprint-setup: the footprint unit's setup widths (sweep_footprint_setup.hpp).
 #include <fmt/format.h>
 
 #include <chrono>
@@ -19,6 +21,8 @@
 #include "texram/trilinear.hpp"
 #include "texram/trilinear_ideal.hpp"
 #include "texsim/commands.hpp"
+#include "texsim/sweep_footprint.hpp"
+#include "texsim/sweep_footprint_setup.hpp"
 #include "texsim/sweep_support.hpp"
 
 namespace tmu::texsim {
@@ -165,22 +169,69 @@ void sweep_trilinear(const SweepArgs& args) {
 
 void add_sweep_command(CLI::App& app, ExitCode&) {
   auto* cmd = app.add_subcommand(
-      "sweep", "Accuracy against cost: error, PSNR, simulation speed and cells per width setting");
+      "sweep",
+      "Accuracy against cost. trilinear: error, PSNR, simulation speed and cells per width "
+      "setting.\n"
+      "footprint: footprint assembly (N max 2..16) against isotropic trilinear, the ideal "
+      "footprint unit and\n"
+      "OpenImageIO's anisotropic filter on a scene at grazing angles: PSNR against a supersampled "
+      "reference,\n"
+      "probes and predicted cycles per pixel, wall time (docs/sweeps/footprint.md).\n"
+      "footprint-setup: the footprint setup's widths D,T,F: lambda error and N against the ideal "
+      "setup,\n"
+      "speed, cells (docs/footprint.md).");
   auto args = std::make_shared<SweepArgs>();
-  cmd->add_option("block", args->block, "trilinear")
+  auto fp = std::make_shared<FootprintSweepArgs>();
+  cmd->add_option("block", args->block, "trilinear | footprint | footprint-setup")
       ->required()
-      ->check(CLI::IsMember({"trilinear"}));
-  cmd->add_option("--settings", args->settings, "Width settings S,W,L separated by ';'")
+      ->check(CLI::IsMember({"trilinear", "footprint", "footprint-setup"}));
+  cmd->add_option("--settings", args->settings,
+                  "trilinear: width settings S,W,L separated by ';' (footprint-setup: D,T,F; "
+                  "default " +
+                      FootprintSetupSweepArgs{}.settings + ")")
       ->capture_default_str();
-  cmd->add_option("--requests", args->requests, "Random requests for the error statistics")
+  cmd->add_option("--requests", args->requests,
+                  "trilinear, footprint-setup: random requests for the error statistics "
+                  "(footprint-setup default 200000)")
       ->capture_default_str();
-  cmd->add_option("--out", args->out_dir, "Write the rendered test pattern of every setting here");
+  cmd->add_option("--out", args->out_dir,
+                  "Write the rendered pictures (and footprint: error maps, side by side) here");
   cmd->add_option("--markdown", args->markdown, "Also write the table as Markdown to this file");
   cmd->add_flag(
       "--no-synth", [args](int64_t) { args->synth = false; },
-      "Skip the Yosys runs (they take minutes)");
-  cmd->callback([args] {
-    if (args->block == "trilinear") sweep_trilinear(*args);
+      "trilinear, footprint-setup: skip the Yosys runs (they take minutes)");
+  cmd->add_option("--scene", fp->scene, "footprint: the scene (default scenes/grazing.json)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--k", fp->k,
+                  "footprint: the reference's sub-pixels per side (default 8, 4 with --quick; 1: "
+                  "per-pixel supersampled footprint)")
+      ->check(CLI::Range(1, 16));
+  cmd->add_flag("--quick", fp->quick, "footprint: half the frame and k = 4 (for tests)");
+  cmd->callback([args, fp, cmd] {
+    if (args->block == "trilinear") {
+      for (const char* o : {"--scene", "--k", "--quick"}) {
+        if (cmd->count(o) > 0) throw CLI::ValidationError(o, "only for `sweep footprint`");
+      }
+      sweep_trilinear(*args);
+    } else if (args->block == "footprint-setup") {
+      for (const char* o : {"--scene", "--k", "--quick", "--out"}) {
+        if (cmd->count(o) > 0) throw CLI::ValidationError(o, "not for `sweep footprint-setup`");
+      }
+      FootprintSetupSweepArgs a;
+      if (cmd->count("--settings") > 0) a.settings = args->settings;
+      if (cmd->count("--requests") > 0) a.count = args->requests;
+      a.synth = args->synth;
+      a.markdown = args->markdown;
+      sweep_footprint_setup(a);
+    } else if (args->block == "footprint") {
+      for (const char* o : {"--settings", "--requests", "--no-synth"}) {
+        if (cmd->count(o) > 0) throw CLI::ValidationError(o, "only for `sweep trilinear`");
+      }
+      FootprintSweepArgs a = *fp;
+      a.out_dir = args->out_dir;
+      a.markdown = args->markdown;
+      sweep_footprint(a);
+    }
   });
 }
 
