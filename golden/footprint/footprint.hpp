@@ -76,7 +76,7 @@ struct Widths {
 };
 
 struct Config {
-  int log2_max_probes = 3;  // 0..4: at most 2^this probes
+  int log2_max_probes = 3;  // 0..4: at most 2^this probes (the 3-bit port: 5..7 act as 4)
   QRule q_rule = QRule::kHeights;
   Widths widths;
 };

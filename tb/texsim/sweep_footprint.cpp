@@ -81,6 +81,7 @@ struct Variant {
   Kind kind;
   int log2_max = kMaxProbeLog2;
   footprint::Direction direction = footprint::Direction::kLongerSide;
+  footprint::QRule q_rule = footprint::QRule::kHeights;  // golden footprint variants
 };
 
 struct Outcome {
@@ -154,9 +155,10 @@ Outcome run_trilinear(const Frame& f) {
   return o;
 }
 
-Outcome run_footprint(const Frame& f, int log2_max) {
+Outcome run_footprint(const Frame& f, int log2_max, footprint::QRule q_rule) {
   footprint::Config config;
   config.log2_max_probes = log2_max;
+  config.q_rule = q_rule;
   Outcome o;
   o.rgba.resize(f.records.size());
   o.seconds = best_time([&] {
@@ -540,6 +542,8 @@ void sweep_footprint(const FootprintSweepArgs& args) {
       {"footprint N<=4", "footprint_n4", Kind::kFootprint, 2},
       {"footprint N<=8", "footprint_n8", Kind::kFootprint, 3},
       {"footprint N<=16", "footprint_n16", Kind::kFootprint, 4},
+      {"footprint N<=16 q sides", "footprint_n16_sides", Kind::kFootprint, 4,
+       footprint::Direction::kLongerSide, footprint::QRule::kSides},
       {"ideal ellipse axis N<=16", "ideal_ellipse_n16", Kind::kIdeal, 4,
        footprint::Direction::kEllipseAxis},
       {"ideal longer side N<=16", "ideal_longer_n16", Kind::kIdeal, 4,
@@ -586,7 +590,7 @@ void sweep_footprint(const FootprintSweepArgs& args) {
         o = run_trilinear(f);
         break;
       case Kind::kFootprint:
-        o = run_footprint(f, v.log2_max);
+        o = run_footprint(f, v.log2_max, v.q_rule);
         break;
       case Kind::kIdeal:
         o = run_ideal(f, v.direction);
