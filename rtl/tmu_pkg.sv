@@ -145,6 +145,46 @@ package tmu_pkg;
   localparam int unsigned QRuleFrac = 0;
   typedef logic [QRuleW-1:0] q_rule_t;
 
+  // SpherePhi: UQ9.0, deflection: horizontal angle phi = p * 2pi/512, modulo 512 (001 eq. 12, nodes)
+  localparam int unsigned SpherePhiW = 9;
+  localparam int unsigned SpherePhiFrac = 0;
+  typedef logic [SpherePhiW-1:0] sphere_phi_t;
+
+  // SphereTheta: UQ8.0, deflection: vertical angle theta, bit 7 sign, 6:0 magnitude m: +-m * 2pi/512
+  localparam int unsigned SphereThetaW = 8;
+  localparam int unsigned SphereThetaFrac = 0;
+  typedef logic [SphereThetaW-1:0] sphere_theta_t;
+
+  // S2sEntry: UQ15.0, spherical-to-spherical map entry: 14:7 first-octant phi 0..128, 6:0 theta 0..127
+  localparam int unsigned S2sEntryW = 15;
+  localparam int unsigned S2sEntryFrac = 0;
+  typedef logic [S2sEntryW-1:0] s2s_entry_t;
+
+  // S2sBlockAddr: UQ10.0, spherical-to-spherical map: 4x4 block (k_theta >> 2) * 32 + (k >> 2)
+  localparam int unsigned S2sBlockAddrW = 10;
+  localparam int unsigned S2sBlockAddrFrac = 0;
+  typedef logic [S2sBlockAddrW-1:0] s2s_block_addr_t;
+
+  // MapAccess: UQ2.0, deflection: the map look-up was 0 a hit in the MBR, 1 a miss, 2 bypassed (z = 0)
+  localparam int unsigned MapAccessW = 2;
+  localparam int unsigned MapAccessFrac = 0;
+  typedef logic [MapAccessW-1:0] map_access_t;
+
+  // CoordValue: SQ1.9, coordinate table entry F1..H3 (001 §5), SQ1.9
+  localparam int unsigned CoordValueW = 10;
+  localparam int unsigned CoordValueFrac = 9;
+  typedef logic signed [CoordValueW-1:0] coord_value_t;
+
+  // CoordTableId: UQ3.0, coordinate table: 0 F1 (cos), 1 F2, 2 F3, 3 G2, 4 G3, 5 H2, 6 H3
+  localparam int unsigned CoordTableIdW = 3;
+  localparam int unsigned CoordTableIdFrac = 0;
+  typedef logic [CoordTableIdW-1:0] coord_table_id_t;
+
+  // CoordTableAddr: UQ8.0, coordinate table address: |theta| 0..127, or phi 0..255 (0..180 degrees)
+  localparam int unsigned CoordTableAddrW = 8;
+  localparam int unsigned CoordTableAddrFrac = 0;
+  typedef logic [CoordTableAddrW-1:0] coord_table_addr_t;
+
   // StatCount: UQ32.0, statistics counter (wraps)
   localparam int unsigned StatCountW = 32;
   localparam int unsigned StatCountFrac = 0;
@@ -170,6 +210,9 @@ package tmu_pkg;
 
   // footprint assembly: at most 2^4 = 16 probes per fragment
   localparam int unsigned MaxProbeLog2 = 4;
+
+  // entries of a spherical-to-spherical map block (4 x 4)
+  localparam int unsigned S2sBlockEntries = 16;
 
   // byte planes of a texel (true colour R G B A) or of a CCC block word
   localparam int unsigned Planes = 4;
