@@ -32,12 +32,14 @@ CoordTables::CoordTables(const TableConfig& config, const ViewFrame& view) : con
   const int w = config.value_bits;
   const auto phi_table = [&](const std::array<double, 3>& a) {
     std::vector<int32_t> t(2 * q);
-    for (uint32_t i = 0; i < 2 * q; ++i) t[i] = quantize(std::sin(i * d) * a[0] + std::cos(i * d) * a[2], w);
+    for (uint32_t i = 0; i < 2 * q; ++i)
+      t[i] = quantize(std::sin(i * d) * a[0] + std::cos(i * d) * a[2], w);
     return t;
   };
   const auto theta_table = [&](double scale, bool cosine) {
     std::vector<int32_t> t(q);
-    for (uint32_t m = 0; m < q; ++m) t[m] = quantize(cosine ? std::cos(m * d) : std::sin(m * d) * scale, w);
+    for (uint32_t m = 0; m < q; ++m)
+      t[m] = quantize(cosine ? std::cos(m * d) : std::sin(m * d) * scale, w);
     return t;
   };
   tables_[kF1] = theta_table(1.0, true);
@@ -70,8 +72,12 @@ MapCoords CoordTables::eval(SphereAngle normal) const {
   const uint32_t pi = phi_neg ? p - 2 * q : p;
 
   const int64_t c = tables_[kF1][m];
-  const auto odd_theta = [&](CoordTable t) { return int64_t{theta_neg ? -tables_[t][m] : tables_[t][m]}; };
-  const auto odd_phi = [&](CoordTable t) { return int64_t{phi_neg ? -tables_[t][pi] : tables_[t][pi]}; };
+  const auto odd_theta = [&](CoordTable t) {
+    return int64_t{theta_neg ? -tables_[t][m] : tables_[t][m]};
+  };
+  const auto odd_phi = [&](CoordTable t) {
+    return int64_t{phi_neg ? -tables_[t][pi] : tables_[t][pi]};
+  };
   const int shift = 2 * w - 2 - kCoordFrac;
   const auto dot = [&](CoordTable t2, CoordTable t3) {
     return round_shift(c * odd_phi(t2) + (odd_theta(t3) << (w - 1)), shift);

@@ -53,8 +53,8 @@ struct TableWrite {
 };
 
 struct MapCoords {
-  int32_t un = 0, vn = 0;           // shading-map coordinates, SQ2.14
-  int32_t ur = 0, vr = 0, wr = 0;   // reflection vector in the view frame, SQ2.14
+  int32_t un = 0, vn = 0;          // shading-map coordinates, SQ2.14
+  int32_t ur = 0, vr = 0, wr = 0;  // reflection vector in the view frame, SQ2.14
 };
 
 class CoordTables {

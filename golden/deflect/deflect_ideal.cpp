@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 namespace tmu::deflect::ideal {
 
 glm::dvec3 to_vector(const Angles& a) {
-  return {std::cos(a.theta) * std::sin(a.phi), std::sin(a.theta), std::cos(a.phi) * std::cos(a.theta)};
+  return {std::cos(a.theta) * std::sin(a.phi), std::sin(a.theta),
+          std::cos(a.phi) * std::cos(a.theta)};
 }
 
 Angles to_angles(const glm::dvec3& v) {
@@ -25,7 +25,8 @@ Angles grid_angles(const SphereGrid& g, SphereAngle a) {
 glm::dvec3 grid_vector(const SphereGrid& g, SphereAngle a) { return to_vector(grid_angles(g, a)); }
 
 glm::dvec3 bump_vector(const Angles& b) {
-  return {std::sin(b.theta), -std::cos(b.theta) * std::sin(b.phi), std::cos(b.theta) * std::cos(b.phi)};
+  return {std::sin(b.theta), -std::cos(b.theta) * std::sin(b.phi),
+          std::cos(b.theta) * std::cos(b.phi)};
 }
 
 Angles bump_angles(const glm::dvec3& d) {

@@ -67,8 +67,9 @@ SphereAngle NormalEncoder::encode(int16_t x, int16_t y, int16_t z, EncoderTrace*
   t.t_theta = divide_ratio(std::min(yy, hh), std::max(yy, hh), c.seed_bits);
 
   const uint32_t q = c.grid.quarter();
-  const uint32_t kp = angle_[angle_index(c, t.t_phi)];
-  const uint32_t kt = angle_[angle_index(c, t.t_theta)];
+  const auto angle = [&](uint32_t ratio) { return ratio == 0 ? 0 : angle_[angle_index(c, ratio)]; };
+  const uint32_t kp = angle(t.t_phi);
+  const uint32_t kt = angle(t.t_theta);
   t.k_phi = t.swap_phi ? q - kp : kp;
   t.k_theta = t.swap_theta ? q - kt : kt;
 

@@ -26,8 +26,11 @@
 //    bucket t_lo = m 2^-M 4^-e .. t_hi = (m + 1) 2^-M 4^-e: a step count 0 .. Q/2. E = 1
 //    is the paper's linear index (M = 7: 128 entries); the default E = 4, M = 5 is 128
 //    entries too, with a third of the linear table's worst error (docs/deflection.md).
-// 6. k_phi = ANGLE[t_phi], Q - k_phi when swapped; phi_N = expand_phi(sx, sz, k_phi).
-//    k_theta likewise; theta_N = (sy, min(k_theta, Q - 1)).
+// 6. k_phi = ANGLE[t_phi], except t_phi = 0 (a zero numerator: the normal lies in a
+//    coordinate plane) gives 0 without the table, so the axes and the planes between them
+//    encode exactly (the first bucket's midpoint is not 0). Q - k_phi when swapped;
+//    phi_N = expand_phi(sx, sz, k_phi).
+//    k_theta likewise (t_theta = 0 gives 0); theta_N = (sy, min(k_theta, Q - 1)).
 // Stated expectations: the zero normal is (0, +0), +z; a pole (0, +-y, 0) is (0, +-(Q - 1));
 // a normal on an octant boundary takes the non-negative side of its zero component; the
 // encoding does not depend on the normal's length beyond the rounding of its components.

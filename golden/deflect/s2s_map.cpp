@@ -40,10 +40,22 @@ MapAddress map_address(const SphereGrid& g, uint32_t phi_prime, uint32_t theta_p
   a.sx = theta_negative(g, theta_prime);
   a.k_theta = theta_mag(g, theta_prime);
   switch (p >> g.mag_bits()) {
-    case 0: a.k = p; a.sy = true; break;
-    case 1: a.k = 2 * q - p; a.sy = true; a.sz = true; break;
-    case 2: a.k = p - 2 * q; a.sz = true; break;
-    default: a.k = 4 * q - p; break;
+    case 0:
+      a.k = p;
+      a.sy = true;
+      break;
+    case 1:
+      a.k = 2 * q - p;
+      a.sy = true;
+      a.sz = true;
+      break;
+    case 2:
+      a.k = p - 2 * q;
+      a.sz = true;
+      break;
+    default:
+      a.k = 4 * q - p;
+      break;
   }
   if (a.k < q) {
     a.block = (a.k_theta / kBlockSide) * (q / kBlockSide) + a.k / kBlockSide;

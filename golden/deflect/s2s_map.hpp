@@ -57,7 +57,9 @@ class S2sMap {
  public:
   explicit S2sMap(const SphereGrid& grid);
   const SphereGrid& grid() const { return grid_; }
-  uint32_t entry(uint32_t k_theta, uint32_t k) const { return entries_[k_theta * grid_.quarter() + k]; }
+  uint32_t entry(uint32_t k_theta, uint32_t k) const {
+    return entries_[k_theta * grid_.quarter() + k];
+  }
   uint32_t block_count() const { return blocks_per_row() * blocks_per_row(); }
   uint32_t blocks_per_row() const { return grid_.quarter() / kBlockSide; }
   std::array<uint32_t, kBlockEntries> block(uint32_t index) const;
@@ -70,7 +72,7 @@ class S2sMap {
 // The octant reduction of (phi', theta').
 struct MapAddress {
   bool sx = false, sy = false, sz = false;
-  uint32_t k = 0, k_theta = 0;  // k = 0 .. Q, k_theta = 0 .. Q-1
+  uint32_t k = 0, k_theta = 0;     // k = 0 .. Q, k_theta = 0 .. Q-1
   uint32_t block = 0, offset = 0;  // valid for k < Q
 };
 MapAddress map_address(const SphereGrid& grid, uint32_t phi_prime, uint32_t theta_prime);

@@ -63,8 +63,10 @@ constexpr int32_t theta_steps(const SphereGrid& g, uint32_t theta) {
 constexpr uint32_t expand_phi(const SphereGrid& g, bool x_negative, bool z_negative, uint32_t l) {
   const uint32_t q2 = 2 * g.quarter();
   uint32_t p = 0;
-  if (!x_negative) p = z_negative ? q2 - l : l;
-  else p = z_negative ? q2 + l : 2 * q2 - l;
+  if (!x_negative)
+    p = z_negative ? q2 - l : l;
+  else
+    p = z_negative ? q2 + l : 2 * q2 - l;
   return p & g.phi_mask();
 }
 
