@@ -11,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "deflect/bump_map.hpp"
 #include "deflect/coord_tables.hpp"
 #include "deflect/deflect_ideal.hpp"
 #include "deflect/normal_encoder.hpp"
@@ -314,6 +315,30 @@ TEST(DeflectCoordTest, SymmetriesHoldToTheRounding) {
   }
   // Table entries never reach -2^(W-1): negation cannot overflow.
   for (const TableWrite& w : tables.writes()) EXPECT_GT(w.value, -(1 << 9));
+}
+
+// --- the bump-map tool ------------------------------------------------------------------
+
+// A flat height map gives the flat texel everywhere; a ramp along u tilts D away from u
+// (theta_D = -atan(slope), phi_D = 0), one along v tilts it in the v-w plane (theta_D = 0,
+// phi_D = atan(slope): D_v = -sin phi_D); the packing round-trips every texel of the grid.
+TEST(DeflectBumpMapTest, FlatRampsAndPacking) {
+  ImageRgb8 flat(8, 8);
+  for (Rgb8& p : flat.pixels) p = {128, 128, 128};
+  for (const Rgb8& t : bump_map_from_heights(flat, 4.0, kGrid).pixels) {
+    EXPECT_EQ(unpack_bump(kGrid, t), (SphereAngle{0, 0}));
+  }
+  const double slope = 0.5, deg = std::atan(slope) * 180 / 3.14159265358979323846;
+  const auto steps = static_cast<uint32_t>(std::lround(deg / kStepDeg));
+  EXPECT_EQ(bump_texel(kGrid, slope, 0), (SphereAngle{0, make_theta(kGrid, true, steps)}));
+  EXPECT_EQ(bump_texel(kGrid, 0, slope), (SphereAngle{steps, 0}));
+  EXPECT_EQ(bump_texel(kGrid, 0, -slope), (SphereAngle{kGrid.phi_count() - steps, 0}));
+  for (uint32_t p = 0; p < kGrid.phi_count(); ++p) {
+    for (uint32_t t = 0; t < 2 * kGrid.quarter(); ++t) {
+      if (theta_negative(kGrid, t) && theta_mag(kGrid, t) == 0) continue;
+      ASSERT_EQ(unpack_bump(kGrid, pack_bump(kGrid, {p, t})), (SphereAngle{p, t}));
+    }
+  }
 }
 
 }  // namespace

@@ -57,6 +57,17 @@ struct MapCoords {
   int32_t ur = 0, vr = 0, wr = 0;  // reflection vector in the view frame, SQ2.14
 };
 
+// One vector per table (F1, F2, F3, G2, G3, H2, H3).
+using CoordTableData = std::array<std::vector<int32_t>, kCoordTableCount>;
+
+// Entries of a table: Q for the theta tables, 2Q for the phi tables.
+uint32_t coord_table_size(const SphereGrid& grid, CoordTable table);
+
+// uN, vN, hN, uR, vR, wR of `normal` from any table contents (the evaluation above). An odd
+// table's entry is negated whenever theta's sign bit is set: -0 reads as zero because the
+// odd tables hold sin(0) = 0 at |theta| = 0.
+MapCoords eval_coords(const TableConfig& config, const CoordTableData& tables, SphereAngle normal);
+
 class CoordTables {
  public:
   CoordTables(const TableConfig& config, const ViewFrame& view);
@@ -68,7 +79,7 @@ class CoordTables {
 
  private:
   TableConfig config_;
-  std::array<std::vector<int32_t>, kCoordTableCount> tables_;
+  CoordTableData tables_;
 };
 
 }  // namespace tmu::deflect

@@ -37,8 +37,8 @@ MapAddress map_address(const SphereGrid& g, uint32_t phi_prime, uint32_t theta_p
   const uint32_t q = g.quarter();
   const uint32_t p = phi_prime & g.phi_mask();
   MapAddress a;
-  a.sx = theta_negative(g, theta_prime);
   a.k_theta = theta_mag(g, theta_prime);
+  a.sx = theta_negative(g, theta_prime) && a.k_theta != 0;  // -0 reads as zero
   switch (p >> g.mag_bits()) {
     case 0:
       a.k = p;

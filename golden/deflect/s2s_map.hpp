@@ -16,7 +16,8 @@
 //   3. phi = phi'' + phi_N (modulo 4Q), theta = theta'': the yaw about y.
 //
 // The map M stores the first octant only (x, y, z >= 0) and is extended by symmetry:
-//   sx = the sign of theta', k_theta = |theta'|; by the top two bits of phi':
+//   sx = the sign of theta' (none for a zero: -0 reads as zero), k_theta = |theta'|; by
+//   the top two bits of phi':
 //     0: k = phi'        sy = 1, sz = 0       2: k = phi' - 2Q   sy = 0, sz = 1
 //     1: k = 2Q - phi'   sy = 1, sz = 1       3: k = 4Q - phi'   sy = 0, sz = 0
 //   so k = 0 .. Q. For k < Q the stored entry (l_phi, l_theta) = ENTRY[k_theta][k]:

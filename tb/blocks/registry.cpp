@@ -4,8 +4,11 @@
 
 #include "blocks/ccc_bilinear_block.hpp"
 #include "blocks/ccc_decoder_block.hpp"
+#include "blocks/coord_gen_block.hpp"
+#include "blocks/deflect_block.hpp"
 #include "blocks/footprint_block.hpp"
 #include "blocks/mipgen_block.hpp"
+#include "blocks/normal_encoder_block.hpp"
 #include "blocks/trilinear_block.hpp"
 
 namespace tmu::tb {
@@ -22,7 +25,16 @@ std::vector<BlockInfo> block_list() {
            "configurations, eq. 5"},
           {"footprint",
            "Footprint assembly (000 §10): N trilinear probes along the longer derivative, "
-           "averaged"}};
+           "averaged"},
+          {"coord-gen",
+           "Shading/environment-map coordinates (001 §5, eq. 17-22): seven tables -> uN, vN, "
+           "uR, vR, wR"},
+          {"deflect",
+           "Bump deflection unit (001 §4.4, §6.2): phi_D - theta_N, first-octant s2s map "
+           "through a one-block MBR, + phi_N"},
+          {"normal-encoder",
+           "Normal encoder (001 §4.1, eq. 12-16): (x, y, z) -> (phi, theta) by two seeded "
+           "Newton-Raphson dividers and angle tables"}};
 }
 
 std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& options) {
@@ -31,6 +43,9 @@ std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& o
   if (name == "mipgen") return std::make_unique<MipgenBlock>(options);
   if (name == "trilinear") return std::make_unique<TrilinearBlock>(options);
   if (name == "footprint") return std::make_unique<FootprintBlock>(options);
+  if (name == "coord-gen") return std::make_unique<CoordGenBlock>(options.seed);
+  if (name == "deflect") return std::make_unique<DeflectBlock>(options);
+  if (name == "normal-encoder") return std::make_unique<NormalEncoderBlock>(options);
   std::string known;
   for (const BlockInfo& b : block_list()) known += (known.empty() ? "" : ", ") + b.name;
   throw std::invalid_argument("unknown block '" + name + "' (blocks: " + known + ")");

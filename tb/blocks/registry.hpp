@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "deflect/normal_encoder.hpp"
 #include "footprint/footprint.hpp"
 #include "harness/block.hpp"
 #include "texram/sampler_config.hpp"
@@ -43,6 +44,13 @@ struct BlockOptions {
   // The setup's widths D, T, F; the rtl engine is verilated at a few (rtl/CMakeLists.txt:
   // TMU_FOOTPRINT_VARIANTS).
   footprint::Widths fp_widths;
+  // deflect: the map memory answers a block request after this many cycles (1..1000), plus
+  // 0..dfl_map_jitter cycles drawn from the seed per request.
+  int dfl_map_latency = 4;
+  int dfl_map_jitter = 0;
+  // normal-encoder: the encoder's seed and angle-table widths (grid A = 9, the ports'); the
+  // rtl engine is verilated at the default and at the paper's linear index E = 1, M = 7.
+  deflect::EncoderConfig encoder;
 };
 
 struct BlockInfo {

@@ -31,6 +31,7 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
     // footprint overrides; empty: drawn from the seed
     std::optional<int> max_probes;
     std::string q_rule, fp_widths;
+    std::string encoder;  // normal-encoder: S,E,M
   };
   auto args = std::make_shared<Args>();
   cmd->add_option("block", args->block, "Block to co-simulate")->required();
@@ -82,6 +83,17 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
   cmd->add_option("--mip-interlaced", args->block_options.mip_interlaced,
                   "mipgen: 0 or 1 (default: from the seed)")
       ->check(CLI::Range(0, 1));
+  cmd->add_option("--map-latency", args->block_options.dfl_map_latency,
+                  "deflect: cycles from a map block request to its response")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--map-jitter", args->block_options.dfl_map_jitter,
+                  "deflect: up to this many extra cycles per map request, drawn from the seed")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
+  cmd->add_option("--encoder", args->encoder,
+                  "normal-encoder: seed-table bits S, angle-table exponent levels E and mantissa "
+                  "bits M (default 7,4,5; rtl is verilated at 7,4,5 and 7,1,7)");
   cmd->add_flag(
       "--no-lookahead", [args](int64_t) { args->block_options.lookahead = false; },
       "ccc-bilinear: disable the neighbour prefetch");
@@ -160,6 +172,17 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
         throw CLI::ValidationError(
             "--fp-widths",
             "'" + args->fp_widths + "' is not D,T,F with D 6..24, T 1..10, F 1..12 like 12,7,8");
+      }
+    }
+    if (!args->encoder.empty()) {
+      deflect::EncoderConfig& e = b.encoder;
+      if (std::sscanf(args->encoder.c_str(), "%d,%d,%d", &e.seed_bits, &e.lut_exp, &e.lut_mant) !=
+              3 ||
+          e.seed_bits < 2 || e.seed_bits > 12 || e.lut_exp < 1 || e.lut_exp > 8 || e.lut_mant < 2 ||
+          e.lut_mant > 10) {
+        throw CLI::ValidationError(
+            "--encoder",
+            "'" + args->encoder + "' is not S,E,M with S 2..12, E 1..8, M 2..10 like 7,4,5");
       }
     }
     const auto block = tb::make_block(args->block, args->block_options);

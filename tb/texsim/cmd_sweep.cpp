@@ -21,6 +21,7 @@
 #include "texram/trilinear.hpp"
 #include "texram/trilinear_ideal.hpp"
 #include "texsim/commands.hpp"
+#include "texsim/sweep_deflection.hpp"
 #include "texsim/sweep_footprint.hpp"
 #include "texsim/sweep_footprint_setup.hpp"
 #include "texsim/sweep_support.hpp"
@@ -179,16 +180,21 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       "probes and predicted cycles per pixel, wall time (docs/sweeps/footprint.md).\n"
       "footprint-setup: the footprint setup's widths D,T,F: lambda error and N against the ideal "
       "setup,\n"
-      "speed, cells (docs/footprint.md).");
+      "speed, cells (docs/footprint.md).\n"
+      "deflection: bump and reflection mapping (001 §4-5) per sphere grid and table widths "
+      "A,E,M,W: angle\n"
+      "errors of the deflected normal and the reflection vector, PSNR, table bits, hit rate, "
+      "cells (docs/deflection.md).");
   auto args = std::make_shared<SweepArgs>();
   auto fp = std::make_shared<FootprintSweepArgs>();
-  cmd->add_option("block", args->block, "trilinear | footprint | footprint-setup")
+  cmd->add_option("block", args->block, "trilinear | footprint | footprint-setup | deflection")
       ->required()
-      ->check(CLI::IsMember({"trilinear", "footprint", "footprint-setup"}));
+      ->check(CLI::IsMember({"trilinear", "footprint", "footprint-setup", "deflection"}));
   cmd->add_option("--settings", args->settings,
                   "trilinear: width settings S,W,L separated by ';' (footprint-setup: D,T,F; "
                   "default " +
-                      FootprintSetupSweepArgs{}.settings + ")")
+                      FootprintSetupSweepArgs{}.settings + "; deflection: A,E,M,W, default " +
+                      DeflectionSweepArgs{}.settings + ")")
       ->capture_default_str();
   cmd->add_option("--requests", args->requests,
                   "trilinear, footprint-setup: random requests for the error statistics "
@@ -199,7 +205,7 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
   cmd->add_option("--markdown", args->markdown, "Also write the table as Markdown to this file");
   cmd->add_flag(
       "--no-synth", [args](int64_t) { args->synth = false; },
-      "trilinear, footprint-setup: skip the Yosys runs (they take minutes)");
+      "trilinear, footprint-setup, deflection: skip the Yosys runs (they take minutes)");
   cmd->add_option("--scene", fp->scene, "footprint: the scene (default scenes/grazing.json)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--k", fp->k,
@@ -223,6 +229,16 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       a.synth = args->synth;
       a.markdown = args->markdown;
       sweep_footprint_setup(a);
+    } else if (args->block == "deflection") {
+      for (const char* o : {"--scene", "--k", "--quick", "--requests"}) {
+        if (cmd->count(o) > 0) throw CLI::ValidationError(o, "not for `sweep deflection`");
+      }
+      DeflectionSweepArgs a;
+      if (cmd->count("--settings") > 0) a.settings = args->settings;
+      a.synth = args->synth;
+      a.out_dir = args->out_dir;
+      a.markdown = args->markdown;
+      sweep_deflection(a);
     } else if (args->block == "footprint") {
       for (const char* o : {"--settings", "--requests", "--no-synth"}) {
         if (cmd->count(o) > 0) throw CLI::ValidationError(o, "only for `sweep trilinear`");

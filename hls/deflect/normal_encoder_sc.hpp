@@ -1,0 +1,86 @@
+// SystemC model of the normal encoder (001 §4.1, eq. 12-16, Fig. 3), the same ports and
+// handshake as rtl/deflect/tmu_normal_encoder.sv at the default grid (A = 9). Its arithmetic
+// is the golden deflect::NormalEncoder (golden/deflect/normal_encoder.hpp: the dividers, the
+// angle table, the octant expansion); the module adds the clocking: one clocked thread, a
+// registered ready and a two-entry output FIFO, so it sustains one normal per clock like the
+// RTL (with a latency of one cycle instead of the RTL's eight).
+//
+// The encoder's configuration (seed and angle-table widths) is a constructor argument, as
+// the RTL's parameters; its grid must be the ports' (A = 9).
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <systemc>
+
+#include "deflect/normal_encoder.hpp"
+#include "formats/formats.hpp"
+#include "hls/common/small_fifo.hpp"
+
+namespace tmu::hls {
+
+namespace fmts = tmu::formats;
+
+class NormalEncoderSc : public sc_core::sc_module {
+ public:
+  template <int W>
+  using uint_t = sc_dt::sc_uint<W>;
+  template <int W>
+  using int_t = sc_dt::sc_int<W>;
+  static constexpr int kCompW = fmts::kUnitComp.width();
+  static constexpr int kPhiW = fmts::kSpherePhi.width();
+  static constexpr int kThetaW = fmts::kSphereTheta.width();
+
+  sc_core::sc_in<bool> clk_i{"clk_i"};
+  sc_core::sc_in<bool> rst_ni{"rst_ni"};
+
+  sc_core::sc_in<bool> in_valid_i{"in_valid_i"};
+  sc_core::sc_out<bool> in_ready_o{"in_ready_o"};
+  sc_core::sc_in<int_t<kCompW>> in_x_i{"in_x_i"};
+  sc_core::sc_in<int_t<kCompW>> in_y_i{"in_y_i"};
+  sc_core::sc_in<int_t<kCompW>> in_z_i{"in_z_i"};
+
+  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
+  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
+  sc_core::sc_out<uint_t<kPhiW>> out_phi_o{"out_phi_o"};
+  sc_core::sc_out<uint_t<kThetaW>> out_theta_o{"out_theta_o"};
+
+  SC_HAS_PROCESS(NormalEncoderSc);
+  NormalEncoderSc(sc_core::sc_module_name name, const deflect::EncoderConfig& config = {})
+      : sc_core::sc_module(name), encoder_(config) {
+    if (config.grid.phi_bits != kPhiW)
+      throw std::invalid_argument("NormalEncoderSc: the ports are built for the A = 9 grid");
+    SC_CTHREAD(run, clk_i.pos());
+    reset_signal_is(rst_ni, false);
+  }
+
+ private:
+  void run() {
+    SmallFifo<deflect::SphereAngle, 2> out;
+    // Not ready in reset: a ready port promises the next edge will take the input, and the
+    // edge that leaves reset is spent here.
+    in_ready_o.write(false);
+    out_valid_o.write(false);
+    out_phi_o.write(0);
+    out_theta_o.write(0);
+    wait();
+    while (true) {
+      in_ready_o.write(out.size() <= 1);  // room for one more whatever the output does
+      out_valid_o.write(!out.empty());
+      out_phi_o.write(out.empty() ? 0u : out.front().phi);
+      out_theta_o.write(out.empty() ? 0u : out.front().theta);
+      wait();
+      // Everything below sees the values from before this edge.
+      if (out_valid_o.read() && out_ready_i.read()) out.pop();
+      if (in_ready_o.read() && in_valid_i.read()) {
+        out.push(encoder_.encode(static_cast<int16_t>(in_x_i.read().to_int()),
+                                 static_cast<int16_t>(in_y_i.read().to_int()),
+                                 static_cast<int16_t>(in_z_i.read().to_int())));
+      }
+    }
+  }
+
+  deflect::NormalEncoder encoder_;
+};
+
+}  // namespace tmu::hls
