@@ -6,10 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <iostream>
 #include <random>
-
-#include <glm/geometric.hpp>
 
 #include "deflect/bump_map.hpp"
 #include "deflect/coord_tables.hpp"
@@ -57,7 +56,7 @@ TEST(DeflectEncoderTest, DividerWithinFiveLsbOfTheExactRatio) {
     std::cout << "[ divider S=" << s << " ] max error " << worst << " LSB of 2^-16\n";
     EXPECT_LE(worst, 5.0) << "seed bits " << s;
   }
-  EXPECT_EQ(divide_ratio(0, 0, 7), 0u);        // den = 0: t = 0
+  EXPECT_EQ(divide_ratio(0, 0, 7), 0u);  // den = 0: t = 0
   // Equal: one LSB short of one or one (the top bucket of the angle table either way).
   EXPECT_GE(divide_ratio(1, 1, 7), (1u << 16) - 1);
   EXPECT_GE(divide_ratio(0xFFFFFFFFu, 0xFFFFFFFFu, 7), (1u << 16) - 1);
@@ -186,8 +185,10 @@ TEST(DeflectMapTest, DeflectionWithinOneStepOfIdeal) {
   for (int i = 0; i < n; ++i) {
     const SphereAngle normal{phi(rng), make_theta(kGrid, rng() & 1, mag(rng))};
     const SphereAngle bump{phi(rng), make_theta(kGrid, rng() & 1, mag(rng))};
-    const glm::dvec3 exact = ideal::deflect(ideal::grid_angles(kGrid, normal), ideal::grid_angles(kGrid, bump));
-    const double e = ideal::angle_deg(ideal::grid_vector(kGrid, unit.deflect(normal, bump).normal), exact);
+    const glm::dvec3 exact =
+        ideal::deflect(ideal::grid_angles(kGrid, normal), ideal::grid_angles(kGrid, bump));
+    const double e =
+        ideal::angle_deg(ideal::grid_vector(kGrid, unit.deflect(normal, bump).normal), exact);
     worst = std::max(worst, e);
     sum += e;
   }
@@ -205,20 +206,22 @@ TEST(DeflectMapTest, HardCasesStayWithinOneStep) {
   DeflectionUnit unit(map);
   const uint32_t q = kGrid.quarter(), top = q - 1;
   const std::vector<std::pair<SphereAngle, SphereAngle>> cases = {
-      {{0, make_theta(kGrid, false, top)}, {0, make_theta(kGrid, false, top)}},   // poles
+      {{0, make_theta(kGrid, false, top)}, {0, make_theta(kGrid, false, top)}},  // poles
       {{0, make_theta(kGrid, true, top)}, {100, make_theta(kGrid, true, top)}},
-      {{511, make_theta(kGrid, false, 5)}, {3, make_theta(kGrid, false, 0)}},     // + phi_N wraps
-      {{7, make_theta(kGrid, false, 20)}, {0, make_theta(kGrid, false, 10)}},     // phi' < 0
-      {{200, make_theta(kGrid, true, 20)}, {500, make_theta(kGrid, true, 30)}},   // phi' > 2 pi
-      {{50, make_theta(kGrid, false, 0)}, {q, make_theta(kGrid, false, 0)}},      // bypass, pole
-      {{50, make_theta(kGrid, false, 0)}, {3 * q, make_theta(kGrid, true, 40)}},  // bypass
-      {{50, make_theta(kGrid, false, 0)}, {2 * q, make_theta(kGrid, false, 40)}}, // y = 0
+      {{511, make_theta(kGrid, false, 5)}, {3, make_theta(kGrid, false, 0)}},      // + phi_N wraps
+      {{7, make_theta(kGrid, false, 20)}, {0, make_theta(kGrid, false, 10)}},      // phi' < 0
+      {{200, make_theta(kGrid, true, 20)}, {500, make_theta(kGrid, true, 30)}},    // phi' > 2 pi
+      {{50, make_theta(kGrid, false, 0)}, {q, make_theta(kGrid, false, 0)}},       // bypass, pole
+      {{50, make_theta(kGrid, false, 0)}, {3 * q, make_theta(kGrid, true, 40)}},   // bypass
+      {{50, make_theta(kGrid, false, 0)}, {2 * q, make_theta(kGrid, false, 40)}},  // y = 0
   };
   for (const auto& [normal, bump] : cases) {
-    const glm::dvec3 exact = ideal::deflect(ideal::grid_angles(kGrid, normal), ideal::grid_angles(kGrid, bump));
+    const glm::dvec3 exact =
+        ideal::deflect(ideal::grid_angles(kGrid, normal), ideal::grid_angles(kGrid, bump));
     const Deflected d = unit.deflect(normal, bump);
     EXPECT_LE(ideal::angle_deg(ideal::grid_vector(kGrid, d.normal), exact), kStepDeg + 1e-9)
-        << "normal " << normal.phi << "," << normal.theta << " bump " << bump.phi << "," << bump.theta;
+        << "normal " << normal.phi << "," << normal.theta << " bump " << bump.phi << ","
+        << bump.theta;
   }
 }
 
@@ -229,12 +232,12 @@ TEST(DeflectMapTest, MbrHitMissBypassSequence) {
   DeflectionUnit unit(map);
   const uint32_t q = kGrid.quarter();
   const SphereAngle n{0, 0};
-  EXPECT_EQ(unit.deflect(n, {1, 1}).access, MapAccess::kMiss);  // empty after reset
-  EXPECT_EQ(unit.deflect(n, {2, 2}).access, MapAccess::kHit);    // same 4x4 block
-  EXPECT_EQ(unit.deflect(n, {q, 2}).access, MapAccess::kBypass); // z = 0: no look-up
-  EXPECT_EQ(unit.deflect(n, {3, 3}).access, MapAccess::kHit);    // the MBR kept its block
-  EXPECT_EQ(unit.deflect(n, {4, 3}).access, MapAccess::kMiss);   // next block over
-  EXPECT_EQ(unit.deflect(n, {3, 3}).access, MapAccess::kMiss);   // and back
+  EXPECT_EQ(unit.deflect(n, {1, 1}).access, MapAccess::kMiss);    // empty after reset
+  EXPECT_EQ(unit.deflect(n, {2, 2}).access, MapAccess::kHit);     // same 4x4 block
+  EXPECT_EQ(unit.deflect(n, {q, 2}).access, MapAccess::kBypass);  // z = 0: no look-up
+  EXPECT_EQ(unit.deflect(n, {3, 3}).access, MapAccess::kHit);     // the MBR kept its block
+  EXPECT_EQ(unit.deflect(n, {4, 3}).access, MapAccess::kMiss);    // next block over
+  EXPECT_EQ(unit.deflect(n, {3, 3}).access, MapAccess::kMiss);    // and back
   // Symmetric inputs share the first-octant block: phi' -> -phi' is the same entry.
   EXPECT_EQ(unit.deflect(n, {kGrid.phi_count() - 3, 3}).access, MapAccess::kHit);
   unit.reset();

@@ -61,7 +61,9 @@ std::vector<TableWrite> CoordTables::writes() const {
   return out;
 }
 
-MapCoords CoordTables::eval(SphereAngle normal) const { return eval_coords(config_, tables_, normal); }
+MapCoords CoordTables::eval(SphereAngle normal) const {
+  return eval_coords(config_, tables_, normal);
+}
 
 uint32_t coord_table_size(const SphereGrid& grid, CoordTable table) {
   return is_phi_table(table) ? 2 * grid.quarter() : grid.quarter();
@@ -78,8 +80,12 @@ MapCoords eval_coords(const TableConfig& config, const CoordTableData& tables, S
   const uint32_t pi = phi_neg ? p - 2 * q : p;
 
   const int64_t c = tables[kF1][m];
-  const auto odd_theta = [&](CoordTable t) { return int64_t{theta_neg ? -tables[t][m] : tables[t][m]}; };
-  const auto odd_phi = [&](CoordTable t) { return int64_t{phi_neg ? -tables[t][pi] : tables[t][pi]}; };
+  const auto odd_theta = [&](CoordTable t) {
+    return int64_t{theta_neg ? -tables[t][m] : tables[t][m]};
+  };
+  const auto odd_phi = [&](CoordTable t) {
+    return int64_t{phi_neg ? -tables[t][pi] : tables[t][pi]};
+  };
   const int shift = 2 * w - 2 - kCoordFrac;
   const auto dot = [&](CoordTable t2, CoordTable t3) {
     return round_shift(c * odd_phi(t2) + (odd_theta(t3) << (w - 1)), shift);

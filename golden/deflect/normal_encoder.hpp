@@ -17,7 +17,8 @@
 //    Seed: r0 = SEED[i], i the S bits of d below its leading one (S = seed_bits), SEED[i] =
 //    round(2^15 / (1 + (i + 1/2) / 2^S)) (UQ1.15, integer arithmetic).
 //    One Newton-Raphson step: r1 = (r0 (2^31 - d r0)) >> 29 (UQ1.16, truncated).
-//    t = min((n r1) >> 15, 2^16).
+//    t = min((n r1) >> 15, 2^16). (r1 < 2^16 for every d at S >= 2, so equal squares give
+//    65533 .. 65535 at S = 7 and the clamp is only a guard; they land in the top bucket.)
 // 5. Angle table (the paper's 128-entry LUT): a floating index so that the table's steps
 //    follow atan(sqrt(t)), whose slope is infinite at t = 0. With t16 = min(t, 2^16 - 1),
 //    e = min(floor(clz16(t16) / 2), E - 1) (E = lut_exp exponent levels: an even shift keeps
@@ -26,9 +27,12 @@
 //    bucket t_lo = m 2^-M 4^-e .. t_hi = (m + 1) 2^-M 4^-e: a step count 0 .. Q/2. E = 1
 //    is the paper's linear index (M = 7: 128 entries); the default E = 4, M = 5 is 128
 //    entries too, with a third of the linear table's worst error (docs/deflection.md).
-// 6. k_phi = ANGLE[t_phi], except t_phi = 0 (a zero numerator: the normal lies in a
-//    coordinate plane) gives 0 without the table, so the axes and the planes between them
-//    encode exactly (the first bucket's midpoint is not 0). Q - k_phi when swapped;
+//    Below the last exponent the mantissa's top two bits are never 00: 104 of those 128
+//    entries are reachable (an index offset would use them, at one more subtractor).
+// 6. k_phi = ANGLE[t_phi], except t_phi = 0 (a zero numerator, or one under 2^-16 of the
+//    denominator: the normal lies in, or within 0.22 degrees of, a coordinate plane) gives 0
+//    without the table, so the axes and the planes between them encode exactly (the first
+//    bucket's midpoint is not 0). Q - k_phi when swapped;
 //    phi_N = expand_phi(sx, sz, k_phi).
 //    k_theta likewise (t_theta = 0 gives 0); theta_N = (sy, min(k_theta, Q - 1)).
 // Stated expectations: the zero normal is (0, +0), +z; a pole (0, +-y, 0) is (0, +-(Q - 1));

@@ -404,8 +404,8 @@ std::vector<std::string> NormalEncoderBlock::coverage_cases() const {
                                     "octant boundary: x = 0 only",
                                     "octant boundary: y = 0 only",
                                     "octant boundary: z = 0 only",
-                                    "|x| = |z| != 0 (t_phi = 1, no swap)",
-                                    "y^2 = x^2 + z^2 != 0 (t_theta = 1, no swap)",
+                                    "|x| = |z| != 0 (equal squares, no swap)",
+                                    "y^2 = x^2 + z^2 != 0 (equal squares, no swap)",
                                     "t >= 1 - 2^-14 (equal squares; the divider never reaches 1)",
                                     "component -32768",
                                     "component +32767",
@@ -451,8 +451,8 @@ void NormalEncoderBlock::cover(const std::vector<Txn>& items, size_t index, cons
     if (y == 0) ++cov["octant boundary: y = 0 only"];
     if (z == 0) ++cov["octant boundary: z = 0 only"];
   }
-  if (xx == zz && xx != 0) ++cov["|x| = |z| != 0 (t_phi = 1, no swap)"];
-  if (yy == hh && yy != 0) ++cov["y^2 = x^2 + z^2 != 0 (t_theta = 1, no swap)"];
+  if (xx == zz && xx != 0) ++cov["|x| = |z| != 0 (equal squares, no swap)"];
+  if (yy == hh && yy != 0) ++cov["y^2 = x^2 + z^2 != 0 (equal squares, no swap)"];
   if (std::max(t.t_phi, t.t_theta) >= kRatioOne - 4)
     ++cov["t >= 1 - 2^-14 (equal squares; the divider never reaches 1)"];
   if (x == -32768 || y == -32768 || z == -32768) ++cov["component -32768"];

@@ -34,7 +34,8 @@ void add_bumpmap_command(CLI::App& app, ExitCode&) {
       ->capture_default_str();
   cmd->callback([a] {
     const ImageRgb8 heights = read_image(a->in);
-    const ImageRgb8 bump = deflect::bump_map_from_heights(heights, a->scale, deflect::SphereGrid{a->grid});
+    const ImageRgb8 bump =
+        deflect::bump_map_from_heights(heights, a->scale, deflect::SphereGrid{a->grid});
     write_image(a->out, bump);
     fmt::print("wrote {} ({}x{}, grid {}x{})\n", a->out, bump.width, bump.height, 1 << a->grid,
                1 << (a->grid - 1));

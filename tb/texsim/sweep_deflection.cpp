@@ -5,11 +5,10 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <numbers>
-#include <sstream>
-
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <numbers>
+#include <sstream>
 
 #include "common/error.hpp"
 #include "common/image.hpp"
@@ -29,7 +28,9 @@ using glm::dvec3;
 
 struct Setting {
   int phi_bits = 9, lut_exp = 4, lut_mant = 5, value_bits = 10;
-  std::string name() const { return fmt::format("{},{},{},{}", phi_bits, lut_exp, lut_mant, value_bits); }
+  std::string name() const {
+    return fmt::format("{},{},{},{}", phi_bits, lut_exp, lut_mant, value_bits);
+  }
 };
 
 std::vector<Setting> parse_settings(const std::string& text) {
@@ -47,7 +48,8 @@ std::vector<Setting> parse_settings(const std::string& text) {
     if (s.phi_bits < 6 || s.phi_bits > 11) throw InputError("--settings", item, "A must be 6..11");
     if (s.lut_exp < 1 || s.lut_exp > 8) throw InputError("--settings", item, "E must be 1..8");
     if (s.lut_mant < 2 || s.lut_mant > 10) throw InputError("--settings", item, "M must be 2..10");
-    if (s.value_bits < 8 || s.value_bits > 16) throw InputError("--settings", item, "W must be 8..16");
+    if (s.value_bits < 8 || s.value_bits > 16)
+      throw InputError("--settings", item, "W must be 8..16");
     out.push_back(s);
   }
   if (out.empty()) throw InputError("--settings", "", "no setting given");
@@ -83,13 +85,15 @@ Rgb8 environment(const dvec3& r_object) {
     const auto b = static_cast<uint8_t>(150 + 100 * r.y);
     return {static_cast<uint8_t>(90 + 60 * r.y), static_cast<uint8_t>(130 + 80 * r.y), b};
   }
-  const double az = std::atan2(r.x, r.z) / std::numbers::pi * 8, el = std::asin(-r.y) / std::numbers::pi * 16;
+  const double az = std::atan2(r.x, r.z) / std::numbers::pi * 8,
+               el = std::asin(-r.y) / std::numbers::pi * 16;
   const bool dark = (static_cast<int>(std::floor(az)) + static_cast<int>(std::floor(el))) & 1;
   return dark ? Rgb8{60, 50, 40} : Rgb8{200, 180, 140};
 }
 
 Rgb8 diffuse(const dvec3& n) {
-  const auto v = static_cast<uint8_t>(std::lround(25 + 230 * std::max(0.0, glm::dot(glm::normalize(n), kLight))));
+  const auto v = static_cast<uint8_t>(
+      std::lround(25 + 230 * std::max(0.0, glm::dot(glm::normalize(n), kLight))));
   return {v, v, v};
 }
 
@@ -108,7 +112,11 @@ double psnr(const ImageRgb8& a, const ImageRgb8& b, const std::vector<bool>& mas
 struct Stats {
   double max = 0, sum = 0;
   size_t n = 0;
-  void add(double e) { max = std::max(max, e); sum += e; ++n; }
+  void add(double e) {
+    max = std::max(max, e);
+    sum += e;
+    ++n;
+  }
   double mean() const { return n ? sum / static_cast<double>(n) : 0; }
 };
 
@@ -129,8 +137,8 @@ SettingResult run_setting(const Setting& s, const DeflectionSweepArgs& args) {
   deflect::DeflectionUnit unit(map);
   const deflect::ViewFrame view = sweep_view();
   const deflect::CoordTables tables(deflect::TableConfig{ec.grid, s.value_bits}, view);
-  const dvec3 side(view.side[0], view.side[1], view.side[2]), up(view.up[0], view.up[1], view.up[2]),
-      dir(view.dir[0], view.dir[1], view.dir[2]);
+  const dvec3 side(view.side[0], view.side[1], view.side[2]),
+      up(view.up[0], view.up[1], view.up[2]), dir(view.dir[0], view.dir[1], view.dir[2]);
 
   const int n = args.size;
   ImageRgb8 gd(n, n), id(n, n), gr(n, n), ir(n, n);
@@ -153,7 +161,8 @@ SettingResult run_setting(const Setting& s, const DeflectionSweepArgs& args) {
       const SphereAngle nq = encoder.encode(q(normal.x), q(normal.y), q(normal.z));
       const deflect::Deflected d = unit.deflect(nq, deflect::bump_texel(ec.grid, slope.x, slope.y));
       const deflect::MapCoords gc = tables.eval(d.normal);
-      golden_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      golden_seconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
       ++r.pixels;
       r.hits += d.access == deflect::MapAccess::kHit;
@@ -178,7 +187,8 @@ SettingResult run_setting(const Setting& s, const DeflectionSweepArgs& args) {
   r.ns_per_pixel = golden_seconds / static_cast<double>(r.pixels) * 1e9;
   if (!args.out_dir.empty()) {
     std::filesystem::create_directories(args.out_dir);
-    const std::string stem = fmt::format("{}/deflection_a{}e{}m{}w{}", args.out_dir, s.phi_bits, s.lut_exp, s.lut_mant, s.value_bits);
+    const std::string stem = fmt::format("{}/deflection_a{}e{}m{}w{}", args.out_dir, s.phi_bits,
+                                         s.lut_exp, s.lut_mant, s.value_bits);
     write_image(stem + "_diffuse.png", gd);
     write_image(stem + "_reflect.png", gr);
     write_image(args.out_dir + "/deflection_ideal_diffuse.png", id);
@@ -192,31 +202,38 @@ SettingResult run_setting(const Setting& s, const DeflectionSweepArgs& args) {
 void sweep_deflection(const DeflectionSweepArgs& args) {
   const std::vector<Setting> settings = parse_settings(args.settings);
   SweepTable table({"A,E,M,W", "grid", "N max deg", "N mean deg", "R max deg", "R mean deg",
-                    "diffuse dB", "reflect dB", "table bits", "hit rate", "cyc/px",
-                    "golden ns/px", "enc cells", "defl cells", "coord cells"});
+                    "diffuse dB", "reflect dB", "table bits", "hit rate", "cyc/px", "golden ns/px",
+                    "enc cells", "defl cells", "coord cells"});
   for (const Setting& s : settings) {
     const SettingResult r = run_setting(s, args);
     const SphereGrid g{s.phi_bits};
     const uint64_t q = g.quarter();
     // Angle table (entries of A-2 bits), seed table (2^7 x 16), the first-octant map,
     // the seven coordinate tables (3 x 2Q + 4 x Q entries of W bits).
-    const uint64_t bits = (uint64_t{static_cast<uint64_t>(s.lut_exp)} << s.lut_mant) * (s.phi_bits - 2) + 128 * 16 +
-                          q * q * (2 * s.phi_bits - 3) + 10 * q * s.value_bits;
+    const uint64_t bits =
+        (uint64_t{static_cast<uint64_t>(s.lut_exp)} << s.lut_mant) * (s.phi_bits - 2) + 128 * 16 +
+        q * q * (2 * s.phi_bits - 3) + 10 * q * s.value_bits;
     const uint64_t lookups = r.hits + r.misses;
+    // The RTL's ports are the package formats: the 512 x 256 grid at most, W <= 10.
+    const bool in_rtl = s.phi_bits <= 9 && s.value_bits <= 10;
     const auto synth = [&](const std::string& top, std::vector<std::pair<std::string, int>> p) {
-      return args.synth ? synthesize(top, p).cells : std::string("-");
+      if (!args.synth) return std::string("-");
+      return in_rtl ? synthesize(top, p).cells : std::string("n/a");
     };
-    table.add({s.name(), fmt::format("{}x{}", g.phi_count(), g.phi_count() / 2),
-               fmt::format("{:.3f}", r.normal.max), fmt::format("{:.3f}", r.normal.mean()),
-               fmt::format("{:.3f}", r.reflection.max), fmt::format("{:.3f}", r.reflection.mean()),
-               fmt::format("{:.2f}", r.psnr_diffuse), fmt::format("{:.2f}", r.psnr_reflect),
-               fmt::format("{}", bits),
-               fmt::format("{:.3f}", lookups ? double(r.hits) / double(lookups) : 1.0),
-               fmt::format("{:.3f}", 1.0 + double(r.misses * static_cast<uint64_t>(args.miss_cycles)) / double(r.pixels)),
-               fmt::format("{:.0f}", r.ns_per_pixel),
-               synth("tmu_normal_encoder", {{"PhiBits", s.phi_bits}, {"LutExp", s.lut_exp}, {"LutMant", s.lut_mant}}),
-               synth("tmu_deflect", {{"PhiBits", s.phi_bits}}),
-               synth("tmu_coord_gen", {{"PhiBits", s.phi_bits}, {"ValueBits", s.value_bits}})});
+    table.add(
+        {s.name(), fmt::format("{}x{}", g.phi_count(), g.phi_count() / 2),
+         fmt::format("{:.3f}", r.normal.max), fmt::format("{:.3f}", r.normal.mean()),
+         fmt::format("{:.3f}", r.reflection.max), fmt::format("{:.3f}", r.reflection.mean()),
+         fmt::format("{:.2f}", r.psnr_diffuse), fmt::format("{:.2f}", r.psnr_reflect),
+         fmt::format("{}", bits),
+         fmt::format("{:.3f}", lookups ? double(r.hits) / double(lookups) : 1.0),
+         fmt::format("{:.3f}", 1.0 + double(r.misses * static_cast<uint64_t>(args.miss_cycles)) /
+                                         double(r.pixels)),
+         fmt::format("{:.0f}", r.ns_per_pixel),
+         synth("tmu_normal_encoder",
+               {{"PhiBits", s.phi_bits}, {"LutExp", s.lut_exp}, {"LutMant", s.lut_mant}}),
+         synth("tmu_deflect", {{"PhiBits", s.phi_bits}}),
+         synth("tmu_coord_gen", {{"PhiBits", s.phi_bits}, {"ValueBits", s.value_bits}})});
     fmt::print("{}\n", table.last_row_text());
   }
   table.print(args.markdown);

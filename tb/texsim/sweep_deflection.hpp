@@ -3,7 +3,8 @@
 // bits, coordinate-table values of W bits): the angle error (max, mean, degrees) of the
 // deflected normal and of the reflection vector against the ideal model, the PSNR of a
 // diffuse-shaded and of a reflection-mapped picture, the table sizes in bits, the MBR's hit
-// rate and the deflection unit's cycles per pixel, and the Yosys cells of the three units.
+// rate and the deflection unit's cycles per pixel, and the Yosys cells of the three units
+// (n/a beyond the RTL's ports: A <= 9, W <= 10).
 //
 // Workload: a bump-mapped sphere filling a 256 x 256 view, pixels in raster order (the
 // scanline coherence the cache relies on), bumps from an analytic height field turned into
@@ -18,10 +19,10 @@ namespace tmu::texsim {
 
 struct DeflectionSweepArgs {
   std::string settings = "8,4,5,10;9,4,5,10;10,4,5,10;9,1,7,10;9,4,6,10;9,8,6,10;9,4,5,8;9,4,5,12";
-  int size = 256;          // the view's side in pixels
-  int miss_cycles = 4;     // the map memory's block latency (the tb memory model's default)
+  int size = 256;       // the view's side in pixels
+  int miss_cycles = 4;  // the map memory's block latency (the tb memory model's default)
   bool synth = true;
-  std::string out_dir;     // pictures per setting
+  std::string out_dir;  // pictures per setting
   std::string markdown;
 };
 
