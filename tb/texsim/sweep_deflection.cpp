@@ -124,6 +124,7 @@ struct SettingResult {
   Stats normal, reflection;
   double psnr_diffuse = 0, psnr_reflect = 0;
   uint64_t hits = 0, misses = 0, bypasses = 0, pixels = 0;
+  uint64_t flat_hits = 0, flat_misses = 0;  // the same sphere without bumps
   double ns_per_pixel = 0;
 };
 
@@ -134,7 +135,7 @@ SettingResult run_setting(const Setting& s, const DeflectionSweepArgs& args) {
   ec.lut_mant = s.lut_mant;
   const deflect::NormalEncoder encoder(ec);
   const deflect::S2sMap map(ec.grid);
-  deflect::DeflectionUnit unit(map);
+  deflect::DeflectionUnit unit(map), flat_unit(map);
   const deflect::ViewFrame view = sweep_view();
   const deflect::CoordTables tables(deflect::TableConfig{ec.grid, s.value_bits}, view);
   const dvec3 side(view.side[0], view.side[1], view.side[2]),
@@ -164,6 +165,9 @@ SettingResult run_setting(const Setting& s, const DeflectionSweepArgs& args) {
       golden_seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+      const deflect::MapAccess flat = flat_unit.deflect(nq, SphereAngle{0, 0}).access;
+      r.flat_hits += flat == deflect::MapAccess::kHit;
+      r.flat_misses += flat == deflect::MapAccess::kMiss;
       ++r.pixels;
       r.hits += d.access == deflect::MapAccess::kHit;
       r.misses += d.access == deflect::MapAccess::kMiss;
@@ -202,8 +206,8 @@ SettingResult run_setting(const Setting& s, const DeflectionSweepArgs& args) {
 void sweep_deflection(const DeflectionSweepArgs& args) {
   const std::vector<Setting> settings = parse_settings(args.settings);
   SweepTable table({"A,E,M,W", "grid", "N max deg", "N mean deg", "R max deg", "R mean deg",
-                    "diffuse dB", "reflect dB", "table bits", "hit rate", "cyc/px", "golden ns/px",
-                    "enc cells", "defl cells", "coord cells"});
+                    "diffuse dB", "reflect dB", "table bits", "hit rate", "cyc/px", "hit rate flat",
+                    "golden ns/px", "enc cells", "defl cells", "coord cells"});
   for (const Setting& s : settings) {
     const SettingResult r = run_setting(s, args);
     const SphereGrid g{s.phi_bits};
@@ -229,6 +233,8 @@ void sweep_deflection(const DeflectionSweepArgs& args) {
          fmt::format("{:.3f}", lookups ? double(r.hits) / double(lookups) : 1.0),
          fmt::format("{:.3f}", 1.0 + double(r.misses * static_cast<uint64_t>(args.miss_cycles)) /
                                          double(r.pixels)),
+         fmt::format("{:.3f}", double(r.flat_hits) /
+                                   double(std::max<uint64_t>(1, r.flat_hits + r.flat_misses))),
          fmt::format("{:.0f}", r.ns_per_pixel),
          synth("tmu_normal_encoder",
                {{"PhiBits", s.phi_bits}, {"LutExp", s.lut_exp}, {"LutMant", s.lut_mant}}),

@@ -3,7 +3,8 @@
 // bits, coordinate-table values of W bits): the angle error (max, mean, degrees) of the
 // deflected normal and of the reflection vector against the ideal model, the PSNR of a
 // diffuse-shaded and of a reflection-mapped picture, the table sizes in bits, the MBR's hit
-// rate and the deflection unit's cycles per pixel, and the Yosys cells of the three units
+// rate and the deflection unit's cycles per pixel (and the hit rate of the same sphere
+// without bumps: coherence the bumps destroy), and the Yosys cells of the three units
 // (n/a beyond the RTL's ports: A <= 9, W <= 10).
 //
 // Workload: a bump-mapped sphere filling a 256 x 256 view, pixels in raster order (the

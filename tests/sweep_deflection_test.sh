@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# `texsim sweep deflection --no-synth`: it runs, writes its pictures and table, the finer
+# sphere grid has the smaller angle errors (the paper's 7.2: resolution is what reflections
+# pay for), the floating angle-table index beats the paper's linear one at the same 128
+# entries, and a malformed setting is a clear error with exit 2. Usage:
+# tests/sweep_deflection_test.sh PATH/TO/texsim
+set -uo pipefail
+texsim=$(realpath "$1")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+pass() { echo "ok   $1"; }
+fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+
+out=$("$texsim" sweep deflection --no-synth --settings "8,4,5,10;9,4,5,10;9,1,7,10" \
+  --out "$work/out" --markdown "$work/table.md" 2>&1)
+code=$?
+echo "$out"
+[[ $code -eq 0 ]] && pass "exit 0" || fail "exit $code"
+[[ -s "$work/out/deflection_a9e4m5w10_reflect.png" ]] && pass "pictures written" || fail "no pictures"
+
+column() {  # the cell of setting $1 under header $2 in the Markdown table
+  awk -F'|' -v v="$1" -v h="$2" '
+    function trim(x) { gsub(/^ +| +$/, "", x); return x }
+    NR == 1 { for (i = 2; i < NF; ++i) if (trim($i) == h) c = i; next }
+    c && trim($2) == v { print trim($c) }' "$work/table.md"
+}
+less() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a < b) }'; }
+
+for h in "N max deg" "R mean deg"; do
+  coarse=$(column "8,4,5,10" "$h")
+  fine=$(column "9,4,5,10" "$h")
+  less "$fine" "$coarse" && pass "$h: 512x256 ($fine) < 256x128 ($coarse)" ||
+    fail "$h: 512x256 ($fine) not below 256x128 ($coarse)"
+done
+floating=$(column "9,4,5,10" "N max deg")
+linear=$(column "9,1,7,10" "N max deg")
+less "$floating" "$linear" && pass "floating index ($floating) < linear index ($linear)" ||
+  fail "floating index ($floating) not below linear index ($linear)"
+
+"$texsim" sweep deflection --no-synth --settings "9,4,5" > "$work/bad.txt" 2>&1
+code=$?
+[[ $code -eq 2 ]] && grep -q "A,E,M,W" "$work/bad.txt" && pass "bad setting: exit 2, names the form" ||
+  fail "bad setting: exit $code: $(cat "$work/bad.txt")"
+
+echo "$failures failure(s)"
+[[ $failures -eq 0 ]]
