@@ -38,7 +38,8 @@ CubeAddress cube_address(int32_t x, int32_t y, int32_t z, int face_log2, int see
   CubeAddress out;
   out.face = major_face(x, y, z, sc, tc, ma);
   const auto coord = [&](int32_t c) {
-    const uint32_t r = divide_ratio(static_cast<uint32_t>(std::abs(c)), static_cast<uint32_t>(ma), seed_bits);
+    const uint32_t r =
+        divide_ratio(static_cast<uint32_t>(std::abs(c)), static_cast<uint32_t>(ma), seed_bits);
     const int64_t s = (1 << 15) + (c < 0 ? -int64_t{r >> 1} : int64_t{r >> 1});  // UQ0.16
     return static_cast<int32_t>(((s << face_log2) + (1 << 7)) >> 8);
   };

@@ -23,7 +23,7 @@
 namespace tmu::deflect {
 
 struct CubeAddress {
-  uint32_t face = 0;    // 0 .. 5: +X, -X, +Y, -Y, +Z, -Z
+  uint32_t face = 0;     // 0 .. 5: +X, -X, +Y, -Y, +Z, -Z
   int32_t u = 0, v = 0;  // TexCoord SQ16.8 on the face
 };
 
