@@ -162,14 +162,7 @@ TEST(CccBilinearCosimTest, RoundingMutantIsCaughtWithAWaveform) {
         return make_ccc_bilinear_rtl_engine<Vtmu_ccc_cache_bilinear_mutant_round>(
             "rtl", block.texture(), true);
       });
-  EXPECT_FALSE(r.pass);
-  EXPECT_EQ(r.failing_engine, "rtl");
-  EXPECT_NE(log.str().find("reproduce: texsim cosim ccc-bilinear --seed 9"), std::string::npos)
-      << log.str();
-  ASSERT_FALSE(r.wave_path.empty());
-  EXPECT_GT(fs::file_size(r.wave_path), 0u);
-  const size_t at = log.str().find("MISMATCH rtl");
-  if (at != std::string::npos) std::cout << log.str().substr(at, 700) << "...\n";
+  testing::expect_rtl_caught_with_waveform(r, log.str(), "texsim cosim ccc-bilinear --seed 9");
 }
 
 // The hit/miss adder drops the fourth block of a footprint: right outputs, wrong statistics.

@@ -131,14 +131,7 @@ CosimResult run_mutant(uint64_t seed, size_t count, bool directed, std::stringst
 TEST(CoordGenCosimTest, MissingPhiNegationMutantIsCaughtWithAWaveform) {
   std::stringstream log;
   const CosimResult r = run_mutant<Vtmu_coord_gen_mutant_phi_neg>(9, 0, true, log);
-  EXPECT_FALSE(r.pass);
-  EXPECT_EQ(r.failing_engine, "rtl");
-  EXPECT_NE(log.str().find("reproduce: texsim cosim coord-gen --seed 9"), std::string::npos)
-      << log.str();
-  ASSERT_FALSE(r.wave_path.empty());
-  EXPECT_GT(std::filesystem::file_size(r.wave_path), 0u);
-  const size_t at = log.str().find("MISMATCH rtl");
-  if (at != std::string::npos) std::cout << log.str().substr(at, 900) << "...\n";
+  testing::expect_rtl_caught_with_waveform(r, log.str(), "texsim cosim coord-gen --seed 9");
 }
 
 // The reflection adds a quarter instead of half an LSB before its shift: caught by random

@@ -242,14 +242,7 @@ TEST(FootprintCosimTest, RoundingMutantIsCaughtWithAWaveform) {
   const FootprintBlock block = mutant_block();
   std::stringstream log;
   const CosimResult r = run_mutant<Vtmu_footprint_mutant_round>(block, 9, 300, log);
-  EXPECT_FALSE(r.pass);
-  EXPECT_EQ(r.failing_engine, "rtl");
-  EXPECT_NE(log.str().find("reproduce: texsim cosim footprint --seed 9"), std::string::npos)
-      << log.str();
-  ASSERT_FALSE(r.wave_path.empty());
-  EXPECT_GT(fs::file_size(r.wave_path), 0u);
-  const size_t at = log.str().find("MISMATCH rtl");
-  if (at != std::string::npos) std::cout << log.str().substr(at, 900) << "...\n";
+  testing::expect_rtl_caught_with_waveform(r, log.str(), "texsim cosim footprint --seed 9");
 }
 
 // The probes start half a probe spacing off along u (the first numerator misses its + d).

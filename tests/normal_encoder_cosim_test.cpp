@@ -156,14 +156,7 @@ CosimResult run_mutant(uint64_t seed, size_t count, std::stringstream& log) {
 TEST(NormalEncoderCosimTest, NewtonRaphsonMutantIsCaughtWithAWaveform) {
   std::stringstream log;
   const CosimResult r = run_mutant<Vtmu_normal_encoder_mutant_nr>(9, 0, log);
-  EXPECT_FALSE(r.pass);
-  EXPECT_EQ(r.failing_engine, "rtl");
-  EXPECT_NE(log.str().find("reproduce: texsim cosim normal-encoder --seed 9"), std::string::npos)
-      << log.str();
-  ASSERT_FALSE(r.wave_path.empty());
-  EXPECT_GT(std::filesystem::file_size(r.wave_path), 0u);
-  const size_t at = log.str().find("MISMATCH rtl");
-  if (at != std::string::npos) std::cout << log.str().substr(at, 700) << "...\n";
+  testing::expect_rtl_caught_with_waveform(r, log.str(), "texsim cosim normal-encoder --seed 9");
 }
 
 // Theta does not saturate at the poles: the directed poles alone catch it.

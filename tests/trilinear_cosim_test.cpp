@@ -263,14 +263,7 @@ TEST(TrilinearCosimTest, MirrorMutantIsCaughtWithAWaveform) {
       mutant_block(TexelKind::kLuminance, Filter::kBilinear, Border::kMirror);
   std::stringstream log;
   const CosimResult r = run_mutant<Vtmu_trilinear_mutant_mirror>(block, 9, 1000, log);
-  EXPECT_FALSE(r.pass);
-  EXPECT_EQ(r.failing_engine, "rtl");
-  EXPECT_NE(log.str().find("reproduce: texsim cosim trilinear --seed 9"), std::string::npos)
-      << log.str();
-  ASSERT_FALSE(r.wave_path.empty());
-  EXPECT_GT(fs::file_size(r.wave_path), 0u);
-  const size_t at = log.str().find("MISMATCH rtl");
-  if (at != std::string::npos) std::cout << log.str().substr(at, 900) << "...\n";
+  testing::expect_rtl_caught_with_waveform(r, log.str(), "texsim cosim trilinear --seed 9");
 }
 
 // The blend adds a quarter instead of half an LSB before its one rounding.
