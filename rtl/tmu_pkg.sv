@@ -185,6 +185,11 @@ package tmu_pkg;
   localparam int unsigned CoordTableAddrFrac = 0;
   typedef logic [CoordTableAddrW-1:0] coord_table_addr_t;
 
+  // CubeFace: UQ3.0, cube environment map face 0..5: +X, -X, +Y, -Y, +Z, -Z (OpenGL's order)
+  localparam int unsigned CubeFaceW = 3;
+  localparam int unsigned CubeFaceFrac = 0;
+  typedef logic [CubeFaceW-1:0] cube_face_t;
+
   // StatCount: UQ32.0, statistics counter (wraps)
   localparam int unsigned StatCountW = 32;
   localparam int unsigned StatCountFrac = 0;

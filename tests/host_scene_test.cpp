@@ -340,12 +340,86 @@ TEST(HostSceneTest, FootprintParsesWithDefaultsAndChecksItsFields) {
 }
 
 TEST(HostSceneTest, ReservedEffectsAreNotImplementedYet) {
-  for (const char* effect : {"bump", "environment", "reflectance", "detail", "procedural"}) {
+  for (const char* effect : {"detail", "procedural"}) {
     Json j = base_scene();
     j["materials"]["label"][effect] = Json::object();
     expect_error(j, std::string("materials.label.") + effect,
                  std::string("the ") + effect + " effect is not implemented yet");
   }
+}
+
+TEST(HostSceneTest, DeflectionEffectsParseWithDefaults) {
+  Json j = base_scene();
+  j["materials"]["floor"]["bump"] = {{"heights", {{"pattern", "smooth"}}}, {"depth", 3}};
+  j["materials"]["floor"]["specular"] = {{"colour", {0.5, 0.5, 0.5}}, {"exponent", 40}};
+  j["materials"]["floor"]["reflectance"] = {{"map", {{"pattern", "noise"}}}};
+  j["materials"]["label"]["environment"] = {{"map", "cube"}, {"size", 256}};
+  j["materials"]["label"]["reflectance"] = 0.25;
+  const Scene s = parse(j);
+  const Material& floor = s.materials[0];
+  ASSERT_TRUE(floor.bump);
+  EXPECT_EQ(floor.bump->depth, 3);
+  // A height field read at the texture's (u, v) takes the texture's size.
+  EXPECT_EQ(floor.bump->heights.width, 256);
+  EXPECT_EQ(floor.bump->heights.height, 256);
+  EXPECT_EQ(floor.shading, Material::Shading::kMaps);  // a bump needs per-pixel shading
+  EXPECT_EQ(floor.shading_map_size, 128);
+  ASSERT_TRUE(floor.specular);
+  EXPECT_EQ(floor.specular->exponent, 40);
+  EXPECT_EQ(floor.specular->colour, glm::dvec3(0.5));
+  ASSERT_TRUE(floor.reflectance.map);
+  EXPECT_EQ(floor.reflectance.map->width, 256);
+  EXPECT_TRUE(floor.uses_normal());
+  const Material& label = s.materials[1];
+  EXPECT_EQ(label.shading, Material::Shading::kVertex);
+  ASSERT_TRUE(label.environment);
+  EXPECT_EQ(label.environment->kind, Environment::Kind::kCube);
+  EXPECT_EQ(label.environment->size, 256);
+  EXPECT_EQ(label.reflectance.constant, glm::dvec3(0.25));
+  EXPECT_TRUE(label.uses_normal());
+  EXPECT_FALSE(parse(base_scene()).materials[0].uses_normal());  // no effect, no chain
+}
+
+TEST(HostSceneTest, DeflectionEffectRulesNameTheField) {
+  const auto with = [](const char* key, const Json& value) {
+    Json j = base_scene();
+    j["materials"]["label"][key] = value;
+    return j;
+  };
+  const Json smooth = {{"pattern", "smooth"}};
+  expect_error(with("bump", {{"depth", 2}}), "materials.label.bump.heights", "missing");
+  expect_error(with("bump", {{"heights", smooth}, {"depth", 100}}), "materials.label.bump.depth",
+               "0..64");
+  expect_error(with("bump", {{"heights", {{"pattern", "smooth"}, {"size", {64, 64}}}}}),
+               "materials.label.bump.heights", "the texture's size 128x32");
+  Json j = with("bump", {{"heights", smooth}});
+  j["materials"]["label"]["shading"] = "vertex";
+  expect_error(j, "materials.label.shading", "per-pixel shading");
+  expect_error(with("shading", "phong"), "materials.label.shading", "vertex");
+  expect_error(with("shading_map_size", 256), "materials.label.shading_map_size",
+               "only applies to shading");
+  j = with("shading", "maps");
+  j["materials"]["label"]["shading_map_size"] = 300;
+  expect_error(j, "materials.label.shading_map_size", "must be 128, 256, 512 or 1024");
+  j["materials"]["label"]["shading_map_size"] = 64;
+  expect_error(j, "materials.label.shading_map_size", "");
+  expect_error(with("specular", {{"exponent", 0}}), "materials.label.specular.exponent", "1..1000");
+  j = with("specular", Json::object());
+  j["materials"]["label"]["environment"] = Json::object();
+  expect_error(j, "materials.label.specular", "either the environment E or the specular term");
+  expect_error(with("reflectance", 0.5), "materials.label.reflectance",
+               "needs a specular term or an environment map");
+  j = with("environment", {{"map", "sphere"}});
+  j["materials"]["label"]["reflectance"] = 1.5;
+  expect_error(j, "materials.label.reflectance", "0..1");
+  j["materials"]["label"]["reflectance"] = {{"map", {{"pattern", "noise"}, {"size", {32, 32}}}}};
+  expect_error(j, "materials.label.reflectance.map", "the texture's size");
+  expect_error(with("environment", {{"map", "dome"}}), "materials.label.environment.map", "sphere");
+  expect_error(with("environment", {{"size", 100}}), "materials.label.environment.size", "");
+  expect_error(with("environment", {{"map", "cube"}, {"image", "x.png"}}),
+               "materials.label.environment.image", "rendered from the room");
+  expect_error(with("environment", {{"image", "missing.png"}}), "materials.label.environment.image",
+               "file not found");
 }
 
 TEST(HostSceneTest, SyntaxErrorNamesLineAndColumn) {
@@ -556,6 +630,10 @@ TEST(HostSceneTest, CccTextureKeepsConfigCcc) {
   // An image may be given the CCC configuration (encoded by the renderer).
   j["materials"]["floor"]["config"] = "ccc";
   EXPECT_EQ(parse(j, dir.str()).materials[0].sampler.kind, texram::TexelKind::kCcc);
+  // The low-cost unit has no eq. 5 stage and no linked maps: no deflection chain behind it.
+  j["materials"]["c"]["unit"] = "lowcost";
+  j["materials"]["c"]["environment"] = Json::object();
+  expect_error(j, "materials.c", "need the TEXRAM", dir.str());
 }
 
 // --- transform ---------------------------------------------------------------------------------

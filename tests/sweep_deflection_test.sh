@@ -2,7 +2,10 @@
 # `texsim sweep deflection --no-synth`: it runs, writes its pictures and table, the finer
 # sphere grid has the smaller angle errors (the paper's 7.2: resolution is what reflections
 # pay for), the floating angle-table index beats the paper's linear one at the same 128
-# entries, and a malformed setting is a clear error with exit 2. Usage:
+# entries, a malformed setting is a clear error with exit 2; on a bundled scene (--scene) its
+# own golden chain gives the deflection cache the hit rate `texsim render` reports for the
+# same scene (two independent paths to one figure), and a scene without a deflection chain
+# is a clear error. Usage:
 # tests/sweep_deflection_test.sh PATH/TO/texsim
 set -uo pipefail
 texsim=$(realpath "$1")
@@ -42,6 +45,23 @@ less "$floating" "$linear" && pass "floating index ($floating) < linear index ($
 code=$?
 [[ $code -eq 2 ]] && grep -q "A,E,M,W" "$work/bad.txt" && pass "bad setting: exit 2, names the form" ||
   fail "bad setting: exit $code: $(cat "$work/bad.txt")"
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+"$texsim" sweep deflection --no-synth --settings "9,4,5,10" --scene "$root/scenes/bumps.json" \
+  --markdown "$work/table.md" > "$work/scene.txt" 2>&1 || fail "scene sweep: $(cat "$work/scene.txt")"
+sweep_rate=$(column "9,4,5,10" "hit rate")
+render_rate=$("$texsim" render "$root/scenes/bumps.json" --engine golden --out "$work/render" \
+  --no-progress | sed -nE 's/.*deflection cache.*hit rate ([0-9.]+) %.*/\1/p')
+[[ -n "$sweep_rate" && -n "$render_rate" ]] &&
+  awk -v a="$sweep_rate" -v b="$render_rate" 'BEGIN { d = 100 * a - b; exit !(d < 0.051 && d > -0.051) }' &&
+  pass "bumps.json hit rate: sweep $sweep_rate = render $render_rate %" ||
+  fail "bumps.json hit rate: sweep '$sweep_rate', render '$render_rate' %"
+
+"$texsim" sweep deflection --no-synth --settings "9,4,5,10" --scene "$root/scenes/plain.json" \
+  > "$work/plain.txt" 2>&1
+code=$?
+[[ $code -eq 2 ]] && grep -q "materials" "$work/plain.txt" &&
+  pass "scene without a chain: exit 2, names materials" || fail "plain scene: exit $code: $(cat "$work/plain.txt")"
 
 echo "$failures failure(s)"
 [[ $failures -eq 0 ]]

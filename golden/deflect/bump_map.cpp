@@ -26,18 +26,22 @@ SphereAngle unpack_bump(const SphereGrid& g, Rgb8 c) {
   return {phi, make_theta(g, (c.b & 0x80) != 0, std::min<uint32_t>(c.g, g.quarter() - 1))};
 }
 
-ImageRgb8 bump_map_from_heights(const ImageRgb8& heights, double scale, const SphereGrid& g) {
+glm::dvec2 bump_slope(const ImageRgb8& heights, int x, int y, double scale) {
   const int w = heights.width, h = heights.height;
-  const auto height = [&](int x, int y) {
-    const Rgb8 c = heights.at((x + w) % w, (y + h) % h);
+  const auto height = [&](int hx, int hy) {
+    const Rgb8 c = heights.at((hx + w) % w, (hy + h) % h);
     return (c.r + c.g + c.b) / (3.0 * 255.0);
   };
-  ImageRgb8 out(w, h);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const double du = (height(x + 1, y) - height(x - 1, y)) / 2 * scale;
-      const double dv = (height(x, y - 1) - height(x, y + 1)) / 2 * scale;
-      out.at(x, y) = pack_bump(g, bump_texel(g, du, dv));
+  return {(height(x + 1, y) - height(x - 1, y)) / 2 * scale,
+          (height(x, y - 1) - height(x, y + 1)) / 2 * scale};
+}
+
+ImageRgb8 bump_map_from_heights(const ImageRgb8& heights, double scale, const SphereGrid& g) {
+  ImageRgb8 out(heights.width, heights.height);
+  for (int y = 0; y < heights.height; ++y) {
+    for (int x = 0; x < heights.width; ++x) {
+      const glm::dvec2 s = bump_slope(heights, x, y, scale);
+      out.at(x, y) = pack_bump(g, bump_texel(g, s.x, s.y));
     }
   }
   return out;

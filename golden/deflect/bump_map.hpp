@@ -13,6 +13,8 @@
 // bits above 7 in bits 6:0. Grids up to A = 10 fit.
 #pragma once
 
+#include <glm/vec2.hpp>
+
 #include "common/image.hpp"
 #include "deflect/sphere_grid.hpp"
 
@@ -26,6 +28,8 @@ SphereAngle bump_texel(const SphereGrid& grid, double du, double dv);
 Rgb8 pack_bump(const SphereGrid& grid, SphereAngle texel);
 SphereAngle unpack_bump(const SphereGrid& grid, Rgb8 rgb);
 
+// The slopes (du, dv) at texel (x, y) of the height field (the rule above).
+glm::dvec2 bump_slope(const ImageRgb8& heights, int x, int y, double scale);
 ImageRgb8 bump_map_from_heights(const ImageRgb8& heights, double scale, const SphereGrid& grid);
 
 }  // namespace tmu::deflect

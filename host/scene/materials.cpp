@@ -17,8 +17,7 @@ namespace tmu::host {
 namespace {
 
 // Material keys reserved for the blocks that do not exist yet.
-constexpr std::string_view kReservedEffects[] = {"bump", "environment", "reflectance", "detail",
-                                                 "procedural"};
+constexpr std::string_view kReservedEffects[] = {"detail", "procedural"};
 
 // The TEXRAM holds power-of-two sides up to 2^10 (000 §2, formats.def MaxMipLog2); the CCC
 // low-cost unit reads level 0 only and takes any side a TexSize holds.
@@ -67,6 +66,8 @@ std::vector<glm::dvec3> parse_two_colours(const JsonNode& node) {
   if (node.size() != 2) node.fail("expected a list of 2 colours");
   return {node[0].colour3(0, 1), node[1].colour3(0, 1)};
 }
+
+}  // namespace
 
 TextureSource parse_texture(const JsonNode& node, const std::string& folder) {
   node.expect_object();
@@ -118,6 +119,8 @@ TextureSource parse_texture(const JsonNode& node, const std::string& folder) {
   return t;
 }
 
+namespace {
+
 texram::Border parse_border_mode(const JsonNode& node) {
   node.one_of({"wrap", "clamp", "border", "mirror"});
   return *texram::parse_border(node.string());
@@ -144,7 +147,8 @@ Material parse_material(const JsonNode& node, const std::string& name, const std
       e->fail(fmt::format("the {} effect is not implemented yet", effect));
   }
   node.allow_keys({"texture", "config", "channel", "filter", "border", "border_colour", "combine",
-                   "constant", "unit", "mipmaps", "footprint"});
+                   "constant", "unit", "mipmaps", "footprint", "shading", "shading_map_size",
+                   "bump", "specular", "environment", "reflectance"});
   Material m;
   m.name = name;
   m.texture = parse_texture(node.at("texture"), folder);
@@ -209,6 +213,8 @@ Material parse_material(const JsonNode& node, const std::string& name, const std
     if (m.unit == Material::Unit::kLowcost) f->fail("footprint assembly drives the trilinear unit");
     m.footprint = parse_footprint(*f);
   }
+
+  parse_effects(node, folder, m);
 
   // Sides: what the unit that samples the texture can hold.
   const JsonNode texture = node.at("texture");

@@ -38,6 +38,36 @@ struct TextureSource {
   uint32_t seed = 1;                // noise, smooth
 };
 
+// The bump map (001 §4.2): a height field's luminance (0..1) times `depth` texels, turned into
+// bump texels (golden/deflect/bump_map.hpp) the size of the material's texture.
+struct Bump {
+  TextureSource heights;
+  double depth = 2;
+};
+
+// The specular term of 001 eq. 10, k_spec (R . L)^n per light, held in the specular shading map.
+struct Specular {
+  glm::dvec3 colour{1};  // k_spec per channel
+  double exponent = 20;  // n_s
+};
+
+// The environment map: 001's spherical map (a mirror ball in the view frame, read at (uN, vN))
+// or 000 §7's cube (six faces, read at the reflection vector (uR, vR, wR)). Without an image
+// the host renders its built-in room into the map.
+struct Environment {
+  enum class Kind { kSphere, kCube };
+  Kind kind = Kind::kSphere;
+  int size = 128;     // the sphere map's side or each cube face's, a power of two
+  std::string image;  // sphere only: a mirror-ball picture, resolved path; empty: the room
+};
+
+// R of 000 eq. 6-7: the register k_s, or a reflectance map k_s(u, v) read at the texture's
+// (u, v).
+struct Reflectance {
+  glm::dvec3 constant{1};
+  std::optional<TextureSource> map;
+};
+
 struct Material {
   std::string name;
   TextureSource texture;
@@ -48,6 +78,17 @@ struct Material {
   Mipmaps mipmaps = Mipmaps::kHost;
   // Footprint assembly (000 §10) in front of the trilinear unit; absent: isotropic sampling.
   std::optional<footprint::Config> footprint;
+  // Per-pixel shading (001 §2.3, §5): the diffuse shading map (and the specular one) read at
+  // the coordinates the (bump-deflected) normal gives, instead of the vertex shade I_d.
+  enum class Shading { kVertex, kMaps };
+  Shading shading = Shading::kVertex;
+  int shading_map_size = 128;  // a power of two, 128..1024
+  std::optional<Bump> bump;
+  std::optional<Specular> specular;
+  std::optional<Environment> environment;
+  Reflectance reflectance;  // applies to the specular map or the environment
+  // The deflection chain (normal encoder, coordinate generator, ...) is built for this material.
+  bool uses_normal() const { return shading == Shading::kMaps || environment.has_value(); }
 };
 
 struct Transform {

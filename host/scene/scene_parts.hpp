@@ -18,6 +18,11 @@ std::vector<Material> parse_materials(const JsonNode& node, const std::string& f
 std::vector<Object> parse_objects(const JsonNode& node, const std::vector<Material>& materials,
                                   const std::string& folder);
 Transform parse_transform(const JsonNode& node);
+// A texture source: {"image": path} | {"ccc": path} | {"pattern": name, ...}.
+TextureSource parse_texture(const JsonNode& node, const std::string& folder);
+// The material keys of the deflection chain (shading, shading_map_size, bump, specular,
+// environment, reflectance) into `material`, whose texture is already parsed.
+void parse_effects(const JsonNode& node, const std::string& folder, Material& material);
 
 // `relative` against `folder` (absolute paths are kept); the file must exist, else `node`
 // fails with "file not found: <resolved path>".

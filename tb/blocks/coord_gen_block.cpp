@@ -542,4 +542,9 @@ std::vector<Port> CoordGenBlock::ports() const {
           {"out_wr_o", comp_w, true}};
 }
 
+MapCoords coord_gen_output(const Txn& output) {
+  return {comp(output, kCgUn), comp(output, kCgVn), comp(output, kCgUr), comp(output, kCgVr),
+          comp(output, kCgWr)};
+}
+
 }  // namespace tmu::tb

@@ -78,6 +78,8 @@ class CoordGenBlock : public Block {
 // Item constructors, for tests and tools (raw port values; value SQ1.9).
 Txn coord_write_item(uint8_t table, uint32_t address, int32_t value);
 Txn coord_request_item(uint32_t phi, uint32_t theta);
+// An output's coordinates, sign-extended.
+deflect::MapCoords coord_gen_output(const Txn& output);
 // Every entry of `tables` as write items, table by table (CoordTables::writes()).
 std::vector<Txn> coord_load_items(const deflect::CoordTables& tables);
 // A view frame drawn from `rng`: side and up orthonormal and uniformly oriented, dir = side x up.

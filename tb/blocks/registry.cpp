@@ -5,10 +5,12 @@
 #include "blocks/ccc_bilinear_block.hpp"
 #include "blocks/ccc_decoder_block.hpp"
 #include "blocks/coord_gen_block.hpp"
+#include "blocks/cube_map_block.hpp"
 #include "blocks/deflect_block.hpp"
 #include "blocks/footprint_block.hpp"
 #include "blocks/mipgen_block.hpp"
 #include "blocks/normal_encoder_block.hpp"
+#include "blocks/specular_combine_block.hpp"
 #include "blocks/trilinear_block.hpp"
 
 namespace tmu::tb {
@@ -29,12 +31,18 @@ std::vector<BlockInfo> block_list() {
           {"coord-gen",
            "Shading/environment-map coordinates (001 §5, eq. 17-22): seven tables -> uN, vN, "
            "uR, vR, wR"},
+          {"cube-map",
+           "Cube environment map addressing (000 §7): reflection vector -> face and texel "
+           "coordinate, dividing by the largest component (the normal encoder's divider)"},
           {"deflect",
            "Bump deflection unit (001 §4.4, §6.2): phi_D - theta_N, first-octant s2s map "
            "through a one-block MBR, + phi_N"},
           {"normal-encoder",
            "Normal encoder (001 §4.1, eq. 12-16): (x, y, z) -> (phi, theta) by two seeded "
-           "Newton-Raphson dividers and angle tables"}};
+           "Newton-Raphson dividers and angle tables"},
+          {"specular-combine",
+           "Specular combine (000 §7 eq. 6, §8 eq. 7): per channel min(255, D + E R / 255), "
+           "alpha from D"}};
 }
 
 std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& options) {
@@ -44,8 +52,10 @@ std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& o
   if (name == "trilinear") return std::make_unique<TrilinearBlock>(options);
   if (name == "footprint") return std::make_unique<FootprintBlock>(options);
   if (name == "coord-gen") return std::make_unique<CoordGenBlock>(options.seed);
+  if (name == "cube-map") return std::make_unique<CubeMapBlock>(options);
   if (name == "deflect") return std::make_unique<DeflectBlock>(options);
   if (name == "normal-encoder") return std::make_unique<NormalEncoderBlock>(options);
+  if (name == "specular-combine") return std::make_unique<SpecularCombineBlock>();
   std::string known;
   for (const BlockInfo& b : block_list()) known += (known.empty() ? "" : ", ") + b.name;
   throw std::invalid_argument("unknown block '" + name + "' (blocks: " + known + ")");

@@ -13,34 +13,15 @@
 #include "ccc/ccc_encoder.hpp"
 #include "common/error.hpp"
 #include "common/image.hpp"
-#include "common/test_patterns.hpp"
 #include "footprint/footprint_ideal.hpp"
+#include "render/effect_chain.hpp"
+#include "render/texture_source.hpp"
 #include "texram/mipgen_stream.hpp"
 #include "texram/trilinear.hpp"
 #include "texram/trilinear_ideal.hpp"
 
 namespace tmu::render {
 namespace {
-
-Rgb8 rgb8(const glm::dvec3& c) {
-  auto ch = [](double v) {
-    return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
-  };
-  return {ch(c.r), ch(c.g), ch(c.b)};
-}
-
-// The level-0 image of an image or pattern source.
-ImageRgb8 source_image(const host::TextureSource& t) {
-  if (t.kind == host::TextureSource::Kind::kImage) return read_image(t.path);
-  const Rgb8 c0 = t.colours.size() > 0 ? rgb8(t.colours[0]) : Rgb8{20, 20, 20};
-  const Rgb8 c1 = t.colours.size() > 1 ? rgb8(t.colours[1]) : Rgb8{235, 235, 235};
-  if (t.pattern == "checker") return patterns::checker(t.width, t.height, t.cell, c0, c1);
-  if (t.pattern == "text") return patterns::text(t.width, t.height, t.text, c0, c1);
-  if (t.pattern == "gradient") return patterns::gradient(t.width, t.height);
-  if (t.pattern == "noise") return patterns::noise(t.width, t.height, t.seed);
-  if (t.pattern == "smooth") return patterns::smooth_field(t.width, t.height, t.seed);
-  return patterns::default_image(t.width, t.height);
-}
 
 // Level 0 of one byte plane of a host-built texture: what the mipgen unit receives.
 texram::Level8 level0_plane(const texram::TexramTexture& t, int plane) {
@@ -51,14 +32,58 @@ texram::Level8 level0_plane(const texram::TexramTexture& t, int plane) {
   return l;
 }
 
-// A unit's engines and ports from a block that owns its environment.
-template <class Block>
-void attach(UnitRun& run, std::shared_ptr<Block> block) {
-  run.ports = block->ports();
-  run.engine = [block](const std::string& level) { return block->engine(level); };
+}  // namespace
+
+UnitRun texture_unit(const host::Material& mat, const MaterialTexture& tex,
+                     const std::vector<host::FragmentRecord>& records,
+                     const std::vector<size_t>& frags, const std::vector<uint32_t>& shades) {
+  UnitRun run;
+  run.material = mat.name;
+  if (mat.footprint) {
+    run.kind = "footprint";
+    tb::FootprintEnv env{{tex.texram, mat.sampler, mat.name}, *mat.footprint};
+    attach(run, std::make_shared<tb::FootprintBlock>(tb::BlockOptions{}, env));
+    for (size_t i = 0; i < tex.texram->clut.size(); ++i) {
+      run.items.push_back(tb::footprint_clut_item(static_cast<uint8_t>(i), tex.texram->clut[i]));
+    }
+    for (size_t k = 0; k < frags.size(); ++k) {
+      const host::FragmentRecord& r = records[frags[k]];
+      run.items.push_back(
+          tb::footprint_sample_item(r.u, r.v, r.r1[0], r.r1[1], r.r2[0], r.r2[1], shades[k]));
+    }
+  } else {
+    run.kind = "trilinear";
+    tb::TrilinearEnv env{tex.texram, mat.sampler, mat.name};
+    attach(run, std::make_shared<tb::TrilinearBlock>(tb::BlockOptions{}, env));
+    run.items = tb::trilinear_clut_load(*tex.texram);
+    for (size_t k = 0; k < frags.size(); ++k) {
+      const host::FragmentRecord& r = records[frags[k]];
+      run.items.push_back(tb::trilinear_sample_item(r.u, r.v, r.lambda, shades[k]));
+    }
+  }
+  return run;
 }
 
-}  // namespace
+glm::dvec4 ideal_texture(const host::Material& mat, const MaterialTexture& tex,
+                         const texram::SamplerConfig& sampler, const host::Fragment& f,
+                         uint32_t shade) {
+  std::array<double, 4> s;
+  if (mat.footprint) {
+    const footprint::IdealConfig ic{mat.footprint->log2_max_probes, mat.footprint->q_rule,
+                                    footprint::Direction::kLongerSide};
+    s = footprint::ideal_sample(*tex.texram, sampler, ic, f.uv, f.r1, f.r2, shade);
+  } else {
+    s = texram::ideal_sample(*tex.texram, sampler, f.uv.x, f.uv.y, f.lambda, shade);
+  }
+  return {s[0], s[1], s[2], s[3]};
+}
+
+uint32_t rgba_of(const glm::dvec4& c) {
+  const auto ch = [](double v) {
+    return static_cast<uint32_t>(std::lround(std::clamp(v, 0.0, 255.0)));
+  };
+  return texram::rgba(ch(c.r), ch(c.g), ch(c.b), ch(c.a));
+}
 
 Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level_(level) {
   for (size_t m = 0; m < scene.materials.size(); ++m) {
@@ -111,6 +136,7 @@ Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level
     } catch (const std::invalid_argument& e) {
       throw InputError(scene.path, field, e.what());
     }
+    if (mat.uses_normal()) mt.effects = build_effect_maps(scene, mat);
     textures_.push_back(std::move(mt));
   }
 }
@@ -139,6 +165,17 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
     const MaterialTexture& tex = textures_[m];
     const bool lowcost = mat.unit == host::Material::Unit::kLowcost;
 
+    if (level_ == Level::kIdeal && mat.uses_normal()) {
+      const std::vector<glm::dvec4> c =
+          ideal_effect_chain({scene_, mat, tex, level_, records, frags}, *fragments);
+      for (size_t k = 0; k < frags.size(); ++k) {
+        (*ideal_rgba)[frags[k]] = c[k];
+        out[frags[k]] = rgba_of(c[k]);
+      }
+      done += frags.size();
+      if (progress) progress(done, records.size());
+      continue;
+    }
     if (level_ == Level::kIdeal) {
       for (size_t i : frags) {
         const host::Fragment& f = (*fragments)[i];
@@ -150,57 +187,37 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
           if (mat.sampler.combine == texram::Combine::kShade) {
             c *= glm::dvec4(f.shade, 1.0);
           }
-        } else if (mat.footprint) {
-          const footprint::IdealConfig ic{mat.footprint->log2_max_probes, mat.footprint->q_rule,
-                                          footprint::Direction::kLongerSide};
-          const auto s =
-              footprint::ideal_sample(*tex.texram, mat.sampler, ic, f.uv, f.r1, f.r2, shade);
-          c = {s[0], s[1], s[2], s[3]};
         } else {
-          const auto s =
-              texram::ideal_sample(*tex.texram, mat.sampler, f.uv.x, f.uv.y, f.lambda, shade);
-          c = {s[0], s[1], s[2], s[3]};
+          c = ideal_texture(mat, tex, mat.sampler, f, shade);
         }
         (*ideal_rgba)[i] = c;
-        out[i] = texram::rgba(static_cast<uint32_t>(std::lround(std::clamp(c.r, 0.0, 255.0))),
-                              static_cast<uint32_t>(std::lround(std::clamp(c.g, 0.0, 255.0))),
-                              static_cast<uint32_t>(std::lround(std::clamp(c.b, 0.0, 255.0))),
-                              static_cast<uint32_t>(std::lround(std::clamp(c.a, 0.0, 255.0))));
+        out[i] = rgba_of(c);
       }
       done += frags.size();
       if (progress) progress(done, records.size());
       continue;
     }
 
+    if (mat.uses_normal()) {
+      const std::vector<uint32_t> rgba =
+          run_effect_chain({scene_, mat, tex, level_, records, frags}, units_, fragment_of_output_);
+      for (size_t k = 0; k < frags.size(); ++k) out[frags[k]] = rgba[k];
+      done += frags.size();
+      if (progress) progress(done, records.size());
+      continue;
+    }
     UnitRun run;
-    run.material = mat.name;
     if (lowcost) {
       run.kind = "lowcost";
+      run.material = mat.name;
       attach(run, std::make_shared<tb::CccBilinearBlock>(tb::BlockOptions{}, tex.ccc));
       run.items = tb::bilinear_clut_load(*tex.ccc);
       for (size_t i : frags)
         run.items.push_back(tb::bilinear_sample_item(records[i].u, records[i].v));
-    } else if (mat.footprint) {
-      run.kind = "footprint";
-      tb::FootprintEnv env{{tex.texram, mat.sampler, mat.name}, *mat.footprint};
-      attach(run, std::make_shared<tb::FootprintBlock>(tb::BlockOptions{}, env));
-      for (size_t i = 0; i < tex.texram->clut.size(); ++i) {
-        run.items.push_back(tb::footprint_clut_item(static_cast<uint8_t>(i), tex.texram->clut[i]));
-      }
-      for (size_t i : frags) {
-        const host::FragmentRecord& r = records[i];
-        run.items.push_back(
-            tb::footprint_sample_item(r.u, r.v, r.r1[0], r.r1[1], r.r2[0], r.r2[1], r.shade));
-      }
     } else {
-      run.kind = "trilinear";
-      tb::TrilinearEnv env{tex.texram, mat.sampler, mat.name};
-      attach(run, std::make_shared<tb::TrilinearBlock>(tb::BlockOptions{}, env));
-      run.items = tb::trilinear_clut_load(*tex.texram);
-      for (size_t i : frags) {
-        const host::FragmentRecord& r = records[i];
-        run.items.push_back(tb::trilinear_sample_item(r.u, r.v, r.lambda, r.shade));
-      }
+      std::vector<uint32_t> shades;
+      for (size_t i : frags) shades.push_back(records[i].shade);
+      run = texture_unit(mat, tex, records, frags, shades);
     }
     tb::RunOptions options;
     const uint64_t base = done;

@@ -6,6 +6,7 @@
 //   unit "lowcost"   : the CCC low-cost unit (bilinear at level 0), then eq. 5 on the host
 //   "footprint"      : the footprint unit (000 §10): N trilinear probes per fragment, averaged;
 //                      it holds its own trilinear unit (host or mipgen pyramid as above)
+//   shading maps, "bump", "environment": the deflection chain (render/effect_chain.hpp)
 #pragma once
 
 #include <functional>
@@ -15,6 +16,7 @@
 
 #include "ccc/ccc_texture.hpp"
 #include "raster/fragment.hpp"
+#include "render/effect_maps.hpp"
 #include "render/units.hpp"
 #include "scene/scene.hpp"
 #include "texram/texture.hpp"
@@ -25,7 +27,22 @@ struct MaterialTexture {
   std::shared_ptr<const texram::TexramTexture> texram;  // the trilinear unit's banks
   std::shared_ptr<const ccc::Texture> ccc;              // the low-cost unit's level 0
   glm::ivec2 size{1, 1};                                // level-0 texels
+  EffectMaps effects;                                   // what the deflection chain reads
 };
+
+// The unit that samples a material's texture (trilinear, or footprint in front of it; not the
+// low-cost unit) for the fragments `frags` of `records`, with I_d = shades[k] for frags[k].
+UnitRun texture_unit(const host::Material& material, const MaterialTexture& texture,
+                     const std::vector<host::FragmentRecord>& records,
+                     const std::vector<size_t>& frags, const std::vector<uint32_t>& shades);
+
+// The ideal model of texture_unit for one fragment, with `sampler` (the material's, or a copy).
+glm::dvec4 ideal_texture(const host::Material& material, const MaterialTexture& texture,
+                         const texram::SamplerConfig& sampler, const host::Fragment& fragment,
+                         uint32_t shade);
+
+// An ideal colour (0..255 per channel) rounded and clamped to RGBA8888.
+uint32_t rgba_of(const glm::dvec4& colour);
 
 // Called with (units done, fragments textured so far, fragments in all).
 using Progress = std::function<void(uint64_t done, uint64_t total)>;

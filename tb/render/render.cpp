@@ -223,18 +223,35 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
       const std::string diff = (dir / (stem + ".check-diff.png")).string();
       write_image(diff, heat);
       rep.files.push_back(diff);
-      if (o.waveform && o.level == Level::kRtl) {  // the unit and output behind the first mismatch
-        for (size_t u = 0; u < pipe.units().size() && c.waveform.empty(); ++u) {
+      if (o.waveform && o.level == Level::kRtl) {
+        // The unit behind the first mismatch: in a chain of units (render/effect_chain.hpp)
+        // the first unit whose output differs from the reference's same unit; a unit's
+        // outputs are compared only when both pipelines built the same units.
+        std::optional<std::pair<size_t, size_t>> culprit;  // unit, output
+        const bool same_units = ref.units().size() == pipe.units().size();
+        for (size_t u = 0; same_units && u < pipe.units().size() && !culprit; ++u) {
+          const auto& got = pipe.units()[u].result.outputs;
+          const auto& want = ref.units()[u].result.outputs;
+          for (size_t k = 0; k < std::min(got.size(), want.size()); ++k) {
+            if (got[k] != want[k]) {
+              culprit = {u, k};
+              break;
+            }
+          }
+        }
+        for (size_t u = 0; u < pipe.units().size() && !culprit; ++u) {  // else the fragment's
           const auto& outs = pipe.fragments_of_outputs()[u];
           const auto it = std::find(outs.begin(), outs.end(), first);
-          if (it == outs.end()) continue;
-          UnitRun& unit = pipe.units()[u];
-          const size_t k = static_cast<size_t>(it - outs.begin());
-          const tb::WaveWindow w = tb::dump_waveform(
-              *unit.engine("rtl"), unit.items, tb::RunOptions{}, unit.result.output_cycles[k], 64,
-              16, o.out_dir, stem + ".mismatch", unit.ports);
-          c.waveform = fmt::format("{} (unit {}, cycles {}..{}; gtkwave {})", w.fst, unit.name(),
-                                   w.begin, w.end, w.gtkw);
+          if (it != outs.end()) culprit = {u, static_cast<size_t>(it - outs.begin())};
+        }
+        if (culprit) {
+          UnitRun& unit = pipe.units()[culprit->first];
+          const tb::WaveWindow w =
+              tb::dump_waveform(*unit.engine("rtl"), unit.items, tb::RunOptions{},
+                                unit.result.output_cycles[culprit->second], 64, 16, o.out_dir,
+                                stem + ".mismatch", unit.ports);
+          c.waveform = fmt::format("{} (unit {}, output {}, cycles {}..{}; gtkwave {})", w.fst,
+                                   unit.name(), culprit->second, w.begin, w.end, w.gtkw);
           rep.files.push_back(w.fst);
         }
       }

@@ -85,6 +85,15 @@ std::string RenderReport::text() const {
         "  low-cost unit cache: {} hits, {} misses, {} prefetches, hit rate {:.1f} %\n", hits,
         misses, sum_counter(units, "lowcost", "prefetches"), 100 * per(hits, hits + misses));
   }
+  const uint64_t map_hits = sum_counter(units, "deflect", "hits"),
+                 map_misses = sum_counter(units, "deflect", "misses");
+  if (map_hits + map_misses) {
+    s += fmt::format(
+        "  deflection cache (MBR): {} hits, {} misses, {} bypasses (z = 0), hit rate {:.1f} %, "
+        "{} stall cycles\n",
+        map_hits, map_misses, sum_counter(units, "deflect", "bypasses"),
+        100 * per(map_hits, map_hits + map_misses), sum_counter(units, "deflect", "stall_cycles"));
+  }
   s += fmt::format(
       "  wall time: front end {:.3f} s, textures {:.3f} s, units {:.3f} s, total {:.3f} s\n",
       front_end_s, textures_s, units_s, total_s);

@@ -45,6 +45,13 @@ struct UnitCensus {
 UnitCensus& census(const std::string& kind);
 void reset_census();
 
+// A unit's engines and ports from a block that owns its environment.
+template <class Block>
+void attach(UnitRun& run, std::shared_ptr<Block> block) {
+  run.ports = block->ports();
+  run.engine = [block](const std::string& level) { return block->engine(level); };
+}
+
 // Runs a unit's engine at `level` (not ideal) over its items and records it in the census.
 void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options);
 

@@ -206,7 +206,10 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
   cmd->add_flag(
       "--no-synth", [args](int64_t) { args->synth = false; },
       "trilinear, footprint-setup, deflection: skip the Yosys runs (they take minutes)");
-  cmd->add_option("--scene", fp->scene, "footprint: the scene (default scenes/grazing.json)")
+  cmd->add_option(
+         "--scene", fp->scene,
+         "footprint: the scene (default scenes/grazing.json); deflection: the fragments of its "
+         "materials with a deflection chain (default a synthetic bump-mapped sphere)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--k", fp->k,
                   "footprint: the reference's sub-pixels per side (default 8, 4 with --quick; 1: "
@@ -230,10 +233,11 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       a.markdown = args->markdown;
       sweep_footprint_setup(a);
     } else if (args->block == "deflection") {
-      for (const char* o : {"--scene", "--k", "--quick", "--requests"}) {
+      for (const char* o : {"--k", "--quick", "--requests"}) {
         if (cmd->count(o) > 0) throw CLI::ValidationError(o, "not for `sweep deflection`");
       }
       DeflectionSweepArgs a;
+      a.scene = fp->scene;
       if (cmd->count("--settings") > 0) a.settings = args->settings;
       a.synth = args->synth;
       a.out_dir = args->out_dir;

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
-#include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "common/error.hpp"
@@ -17,6 +17,13 @@
 #include "deflect/deflect_ideal.hpp"
 #include "deflect/normal_encoder.hpp"
 #include "deflect/s2s_map.hpp"
+#include "deflect/view_maps.hpp"
+#include "geometry/mesh.hpp"
+#include "raster/rasterizer.hpp"
+#include "render/effect_maps.hpp"
+#include "render/pipeline.hpp"
+#include "render/texture_source.hpp"
+#include "scene/scene.hpp"
 #include "texsim/sweep_support.hpp"
 
 namespace tmu::texsim {
@@ -76,21 +83,6 @@ glm::dvec2 bump_slopes(double phi, double theta) {
   return {du, dv};
 }
 
-// What the reflection picture looks up: a sky brightening towards the zenith, a checkered
-// ground below the horizon (sharp edges show direction errors) and a sun.
-Rgb8 environment(const dvec3& r_object) {
-  const dvec3 r = glm::normalize(r_object);
-  if (glm::dot(r, glm::normalize(dvec3(0.5, 0.6, 0.4))) > 0.995) return {255, 240, 200};
-  if (r.y >= 0) {
-    const auto b = static_cast<uint8_t>(150 + 100 * r.y);
-    return {static_cast<uint8_t>(90 + 60 * r.y), static_cast<uint8_t>(130 + 80 * r.y), b};
-  }
-  const double az = std::atan2(r.x, r.z) / std::numbers::pi * 8,
-               el = std::asin(-r.y) / std::numbers::pi * 16;
-  const bool dark = (static_cast<int>(std::floor(az)) + static_cast<int>(std::floor(el))) & 1;
-  return dark ? Rgb8{60, 50, 40} : Rgb8{200, 180, 140};
-}
-
 Rgb8 diffuse(const dvec3& n) {
   const auto v = static_cast<uint8_t>(
       std::lround(25 + 230 * std::max(0.0, glm::dot(glm::normalize(n), kLight))));
@@ -103,7 +95,7 @@ double psnr(const ImageRgb8& a, const ImageRgb8& b, const std::vector<bool>& mas
   for (size_t i = 0; i < a.pixels.size(); ++i) {
     if (!mask[i]) continue;
     const Rgb8 p = a.pixels[i], q = b.pixels[i];
-    for (const double d : {double{p.r} - q.r, double{p.g} - q.g, double{p.b} - q.b}) se += d * d;
+    for (const int d : {p.r - q.r, p.g - q.g, p.b - q.b}) se += double(d) * d;
     n += 3;
   }
   return se == 0 ? 99.0 : 10 * std::log10(255.0 * 255.0 * static_cast<double>(n) / se);
@@ -123,68 +115,154 @@ struct Stats {
 struct SettingResult {
   Stats normal, reflection;
   double psnr_diffuse = 0, psnr_reflect = 0;
-  uint64_t hits = 0, misses = 0, bypasses = 0, pixels = 0;
+  uint64_t hits = 0, misses = 0, bypasses = 0, pixels = 0, bumped = 0;
   uint64_t flat_hits = 0, flat_misses = 0;  // the same sphere without bumps
   double ns_per_pixel = 0;
 };
 
-SettingResult run_setting(const Setting& s, const DeflectionSweepArgs& args) {
-  deflect::EncoderConfig ec;
-  ec.grid.phi_bits = s.phi_bits;
-  ec.lut_exp = s.lut_exp;
-  ec.lut_mant = s.lut_mant;
-  const deflect::NormalEncoder encoder(ec);
-  const deflect::S2sMap map(ec.grid);
-  deflect::DeflectionUnit unit(map), flat_unit(map);
-  const deflect::ViewFrame view = sweep_view();
-  const deflect::CoordTables tables(deflect::TableConfig{ec.grid, s.value_bits}, view);
-  const dvec3 side(view.side[0], view.side[1], view.side[2]),
-      up(view.up[0], view.up[1], view.up[2]), dir(view.dir[0], view.dir[1], view.dir[2]);
+// One pixel of the workload: its exact normal and, when bumped, the bump frame's slopes.
+struct Sample {
+  size_t pixel = 0;
+  int group = 0;  // a new group starts a new deflection unit (render: one per material)
+  dvec3 normal{0, 0, 1};
+  std::optional<glm::dvec2> slope;
+};
 
-  const int n = args.size;
-  ImageRgb8 gd(n, n), id(n, n), gr(n, n), ir(n, n);
-  std::vector<bool> mask(size_t(n) * n, false);
-  SettingResult r;
-  double golden_seconds = 0;
+struct Workload {
+  std::string name;
+  int width = 0, height = 0;
+  deflect::ViewFrame view;
+  std::vector<Sample> samples;  // in the order the units see them
+};
+
+// The synthetic sphere: a bump-mapped sphere filling the view, in raster order.
+Workload sphere_workload(int n) {
+  Workload w{fmt::format("a bump-mapped sphere, {0} x {0} pixels", n), n, n, sweep_view(), {}};
+  const deflect::ViewFrame& v = w.view;
+  const dvec3 side(v.side[0], v.side[1], v.side[2]), up(v.up[0], v.up[1], v.up[2]),
+      dir(v.dir[0], v.dir[1], v.dir[2]);
   for (int y = 0; y < n; ++y) {
     for (int x = 0; x < n; ++x) {
       const double a = (2.0 * x + 1) / n - 1, b = 1 - (2.0 * y + 1) / n;
       if (a * a + b * b >= 0.98) continue;
       const dvec3 normal = a * side + b * up + std::sqrt(1 - a * a - b * b) * dir;
       const deflect::ideal::Angles na = deflect::ideal::to_angles(normal);
-      const glm::dvec2 slope = bump_slopes(na.phi, na.theta);
-      const deflect::ideal::Angles ba = deflect::ideal::bump_angles(dvec3(-slope.x, -slope.y, 1));
-      const dvec3 exact = deflect::ideal::deflect(na, ba);
-      const deflect::ideal::Coords xc = deflect::ideal::map_coords(view, exact);
+      w.samples.push_back({size_t(y) * n + x, 0, normal, bump_slopes(na.phi, na.theta)});
+    }
+  }
+  return w;
+}
 
-      const auto t0 = std::chrono::steady_clock::now();
-      const auto q = [](double v) { return static_cast<int16_t>(std::lround(v * 16384)); };
-      const SphereAngle nq = encoder.encode(q(normal.x), q(normal.y), q(normal.z));
-      const deflect::Deflected d = unit.deflect(nq, deflect::bump_texel(ec.grid, slope.x, slope.y));
-      const deflect::MapCoords gc = tables.eval(d.normal);
-      golden_seconds +=
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+// A texel index of a nearest sample under a border mode (border: the clamp's texel).
+int border_texel(int i, int size, texram::Border mode) {
+  if (mode == texram::Border::kWrap) return ((i % size) + size) % size;
+  if (mode == texram::Border::kMirror) {
+    const int m = ((i % (2 * size)) + 2 * size) % (2 * size);
+    return m < size ? m : 2 * size - 1 - m;
+  }
+  return std::clamp(i, 0, size - 1);
+}
 
-      const deflect::MapAccess flat = flat_unit.deflect(nq, SphereAngle{0, 0}).access;
+// A scene's fragments of the materials with a deflection chain, material by material in frame
+// order (as the renderer feeds its units), with the bump texel a nearest sample reads.
+Workload scene_workload(const std::string& path) {
+  const host::Scene scene = host::load_scene(path);
+  Workload w{
+      path, scene.camera.width, scene.camera.height, render::camera_view_frame(scene.camera), {}};
+  std::vector<glm::ivec2> sizes;
+  {
+    const render::Pipeline pipe(scene, render::Level::kGolden);
+    sizes = pipe.texture_sizes();
+  }
+  std::vector<host::Mesh> meshes;
+  for (const host::Object& obj : scene.objects) meshes.push_back(host::make_mesh(obj));
+  const std::vector<host::Fragment> fragments = host::rasterize(scene, meshes, sizes);
+  for (size_t m = 0; m < scene.materials.size(); ++m) {
+    const host::Material& mat = scene.materials[m];
+    if (!mat.uses_normal()) continue;
+    const ImageRgb8 heights = mat.bump ? render::source_image(mat.bump->heights) : ImageRgb8();
+    for (const host::Fragment& f : fragments) {
+      if (f.material != static_cast<int>(m)) continue;
+      Sample s{size_t(f.y) * size_t(w.width) + size_t(f.x), static_cast<int>(m),
+               glm::normalize(f.normal), std::nullopt};
+      if (mat.bump) {
+        const host::FragmentRecord r = host::quantize(f);
+        const int x = border_texel(r.u >> 8, heights.width, mat.sampler.border_u);
+        const int y = border_texel(r.v >> 8, heights.height, mat.sampler.border_v);
+        s.slope = deflect::bump_slope(heights, x, y, mat.bump->depth);
+      }
+      w.samples.push_back(s);
+    }
+  }
+  if (w.samples.empty()) {
+    throw InputError(path, "materials",
+                     "no visible material has a bump, shading maps or an environment");
+  }
+  return w;
+}
+
+SettingResult run_setting(const Setting& s, const Workload& work, const DeflectionSweepArgs& args) {
+  deflect::EncoderConfig ec;
+  ec.grid.phi_bits = s.phi_bits;
+  ec.lut_exp = s.lut_exp;
+  ec.lut_mant = s.lut_mant;
+  const deflect::NormalEncoder encoder(ec);
+  const deflect::S2sMap map(ec.grid);
+  std::optional<deflect::DeflectionUnit> unit, flat_unit;
+  const deflect::ViewFrame& view = work.view;
+  const deflect::CoordTables tables(deflect::TableConfig{ec.grid, s.value_bits}, view);
+  const dvec3 side(view.side[0], view.side[1], view.side[2]),
+      up(view.up[0], view.up[1], view.up[2]), dir(view.dir[0], view.dir[1], view.dir[2]);
+
+  ImageRgb8 gd(work.width, work.height), id = gd, gr = gd, ir = gd;
+  std::vector<bool> mask(gd.pixels.size(), false);
+  SettingResult r;
+  double golden_seconds = 0;
+  int group = -1;
+  for (const Sample& sample : work.samples) {
+    if (sample.group != group) {  // a new material: its own deflection unit, an empty MBR
+      unit.emplace(map);
+      flat_unit.emplace(map);
+      group = sample.group;
+    }
+    const dvec3& normal = sample.normal;
+    const deflect::ideal::Angles na = deflect::ideal::to_angles(normal);
+    const glm::dvec2 slope = sample.slope.value_or(glm::dvec2(0));
+    const deflect::ideal::Angles ba = deflect::ideal::bump_angles(dvec3(-slope.x, -slope.y, 1));
+    const dvec3 exact = sample.slope ? deflect::ideal::deflect(na, ba) : normal;
+    const deflect::ideal::Coords xc = deflect::ideal::map_coords(view, exact);
+
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto q = [](double v) { return static_cast<int16_t>(std::lround(v * 16384)); };
+    const SphereAngle nq = encoder.encode(q(normal.x), q(normal.y), q(normal.z));
+    std::optional<deflect::Deflected> d;
+    if (sample.slope) d = unit->deflect(nq, deflect::bump_texel(ec.grid, slope.x, slope.y));
+    const SphereAngle deflected = d ? d->normal : nq;
+    const deflect::MapCoords gc = tables.eval(deflected);
+    golden_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    ++r.pixels;
+    if (d) {  // the deflection unit works for bumped pixels only
+      ++r.bumped;
+      const deflect::MapAccess flat = flat_unit->deflect(nq, SphereAngle{0, 0}).access;
       r.flat_hits += flat == deflect::MapAccess::kHit;
       r.flat_misses += flat == deflect::MapAccess::kMiss;
-      ++r.pixels;
-      r.hits += d.access == deflect::MapAccess::kHit;
-      r.misses += d.access == deflect::MapAccess::kMiss;
-      r.bypasses += d.access == deflect::MapAccess::kBypass;
-      const dvec3 golden_n = deflect::ideal::grid_vector(ec.grid, d.normal);
-      r.normal.add(deflect::ideal::angle_deg(golden_n, exact));
-      const dvec3 golden_r_view = dvec3(gc.ur, gc.vr, gc.wr) / 16384.0;
-      r.reflection.add(deflect::ideal::angle_deg(golden_r_view, dvec3(xc.ur, xc.vr, xc.wr)));
-
-      const size_t i = size_t(y) * n + x;
-      mask[i] = true;
-      gd.pixels[i] = diffuse(golden_n);
-      id.pixels[i] = diffuse(exact);
-      const auto to_object = [&](const dvec3& v) { return v.x * side + v.y * up + v.z * dir; };
-      gr.pixels[i] = environment(to_object(golden_r_view));
-      ir.pixels[i] = environment(to_object(dvec3(xc.ur, xc.vr, xc.wr)));
+      r.hits += d->access == deflect::MapAccess::kHit;
+      r.misses += d->access == deflect::MapAccess::kMiss;
+      r.bypasses += d->access == deflect::MapAccess::kBypass;
     }
+    const dvec3 golden_n = deflect::ideal::grid_vector(ec.grid, deflected);
+    r.normal.add(deflect::ideal::angle_deg(golden_n, exact));
+    const dvec3 golden_r_view = dvec3(gc.ur, gc.vr, gc.wr) / 16384.0;
+    r.reflection.add(deflect::ideal::angle_deg(golden_r_view, dvec3(xc.ur, xc.vr, xc.wr)));
+
+    const size_t i = sample.pixel;
+    mask[i] = true;
+    gd.pixels[i] = diffuse(golden_n);
+    id.pixels[i] = diffuse(exact);
+    const auto to_object = [&](const dvec3& v) { return v.x * side + v.y * up + v.z * dir; };
+    gr.pixels[i] = deflect::sky_room(to_object(golden_r_view));
+    ir.pixels[i] = deflect::sky_room(to_object(dvec3(xc.ur, xc.vr, xc.wr)));
   }
   r.psnr_diffuse = psnr(gd, id, mask);
   r.psnr_reflect = psnr(gr, ir, mask);
@@ -208,8 +286,11 @@ void sweep_deflection(const DeflectionSweepArgs& args) {
   SweepTable table({"A,E,M,W", "grid", "N max deg", "N mean deg", "R max deg", "R mean deg",
                     "diffuse dB", "reflect dB", "table bits", "hit rate", "cyc/px", "hit rate flat",
                     "golden ns/px", "enc cells", "defl cells", "coord cells"});
+  const Workload work =
+      args.scene.empty() ? sphere_workload(args.size) : scene_workload(args.scene);
+  fmt::print("workload: {} ({} pixels through the chain)\n", work.name, work.samples.size());
   for (const Setting& s : settings) {
-    const SettingResult r = run_setting(s, args);
+    const SettingResult r = run_setting(s, work, args);
     const SphereGrid g{s.phi_bits};
     const uint64_t q = g.quarter();
     // Angle table (entries of A-2 bits), seed table (2^7 x 16), the first-octant map,
@@ -232,7 +313,7 @@ void sweep_deflection(const DeflectionSweepArgs& args) {
          fmt::format("{}", bits),
          fmt::format("{:.3f}", lookups ? double(r.hits) / double(lookups) : 1.0),
          fmt::format("{:.3f}", 1.0 + double(r.misses * static_cast<uint64_t>(args.miss_cycles)) /
-                                         double(r.pixels)),
+                                         double(std::max<uint64_t>(1, r.bumped))),
          fmt::format("{:.3f}", double(r.flat_hits) /
                                    double(std::max<uint64_t>(1, r.flat_hits + r.flat_misses))),
          fmt::format("{:.0f}", r.ns_per_pixel),

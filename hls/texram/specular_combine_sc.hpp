@@ -1,0 +1,67 @@
+// SystemC model of the specular combine (000 §7 eq. 6, §8 eq. 7), the same ports and handshake
+// as rtl/texram/tmu_specular_combine.sv. Its arithmetic is the golden texram::specular_combine
+// (golden/texram/specular_combine.hpp): per colour channel min(255, D + mul255(E, R)), alpha
+// from D. The module adds the clocking: one clocked thread, a registered ready and a two-entry
+// output FIFO, so it sustains one colour per clock like the RTL (with a latency of one cycle
+// instead of the RTL's two).
+#pragma once
+
+#include <cstdint>
+#include <systemc>
+
+#include "formats/formats.hpp"
+#include "hls/common/small_fifo.hpp"
+#include "texram/specular_combine.hpp"
+
+namespace tmu::hls {
+
+class SpecularCombineSc : public sc_core::sc_module {
+ public:
+  static constexpr int kRgbaW = tmu::formats::kRgba8888.width();
+  using rgba_t = sc_dt::sc_uint<kRgbaW>;
+
+  sc_core::sc_in<bool> clk_i{"clk_i"};
+  sc_core::sc_in<bool> rst_ni{"rst_ni"};
+
+  sc_core::sc_in<bool> in_valid_i{"in_valid_i"};
+  sc_core::sc_out<bool> in_ready_o{"in_ready_o"};
+  sc_core::sc_in<rgba_t> in_diffuse_i{"in_diffuse_i"};
+  sc_core::sc_in<rgba_t> in_specular_i{"in_specular_i"};
+  sc_core::sc_in<rgba_t> in_reflectance_i{"in_reflectance_i"};
+
+  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
+  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
+  sc_core::sc_out<rgba_t> out_colour_o{"out_colour_o"};
+
+  SC_HAS_PROCESS(SpecularCombineSc);
+  explicit SpecularCombineSc(sc_core::sc_module_name name) : sc_core::sc_module(name) {
+    SC_CTHREAD(run, clk_i.pos());
+    reset_signal_is(rst_ni, false);
+  }
+
+ private:
+  void run() {
+    SmallFifo<uint32_t, 2> out;
+    // Not ready in reset: a ready port promises the next edge will take the input, and the
+    // edge that leaves reset is spent here.
+    in_ready_o.write(false);
+    out_valid_o.write(false);
+    out_colour_o.write(0);
+    wait();
+    while (true) {
+      in_ready_o.write(out.size() <= 1);  // room for one more whatever the output does
+      out_valid_o.write(!out.empty());
+      out_colour_o.write(out.empty() ? 0u : out.front());
+      wait();
+      // Everything below sees the values from before this edge.
+      if (out_valid_o.read() && out_ready_i.read()) out.pop();
+      if (in_ready_o.read() && in_valid_i.read()) {
+        out.push(texram::specular_combine(static_cast<uint32_t>(in_diffuse_i.read()),
+                                          static_cast<uint32_t>(in_specular_i.read()),
+                                          static_cast<uint32_t>(in_reflectance_i.read())));
+      }
+    }
+  }
+};
+
+}  // namespace tmu::hls

@@ -1,0 +1,430 @@
+#include "blocks/cube_map_block.hpp"
+
+#include <Vtmu_cube_address.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "deflect/cube_map.hpp"
+#include "formats/formats.hpp"
+#include "harness/hls_runner.hpp"
+#include "hls/deflect/cube_address_sc.hpp"
+
+namespace tmu::tb {
+namespace fmts = tmu::formats;
+
+namespace {
+
+const Schema kInputs({{"x", fmts::kUnitComp},
+                      {"y", fmts::kUnitComp},
+                      {"z", fmts::kUnitComp},
+                      {"face_log2", fmts::kMipLog2}});
+const Schema kOutputs({{"face", fmts::kCubeFace}, {"u", fmts::kTexCoord}, {"v", fmts::kTexCoord}});
+
+constexpr int32_t kOne = 1 << fmts::kUnitComp.frac_bits;  // 1.0, SQ2.14
+constexpr uint64_t kCoordMask = (uint64_t{1} << fmts::kTexCoord.width()) - 1;
+constexpr std::array<const char*, 6> kFaceNames = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+
+Txn output_of(const deflect::CubeAddress& a) {
+  Txn out;
+  out.f[kCubeFace] = a.face;
+  out.f[kCubeU] = static_cast<uint64_t>(static_cast<int64_t>(a.u)) & kCoordMask;
+  out.f[kCubeV] = static_cast<uint64_t>(static_cast<int64_t>(a.v)) & kCoordMask;
+  return out;
+}
+
+deflect::CubeAddress golden_address(const Txn& t) {
+  return deflect::cube_address(cube_x(t), cube_y(t), cube_z(t), cube_face_log2(t),
+                               CubeMapBlock::kSeedBits);
+}
+
+class GoldenEngine : public Engine {
+ public:
+  std::string name() const override { return "golden"; }
+  RunResult run(const std::vector<Txn>& items, const RunOptions&) override {
+    RunResult r;
+    r.outputs.reserve(items.size());
+    const auto start = std::chrono::steady_clock::now();
+    for (const Txn& t : items) r.outputs.push_back(output_of(golden_address(t)));
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.output_cycles.assign(r.outputs.size(), 0);
+    return r;
+  }
+};
+
+// The hls module with its signals, driven by the harness's ScDriver.
+class HlsBench : public sc_core::sc_module, public ScAdapter {
+ public:
+  HlsBench(sc_core::sc_module_name name, sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n)
+      : sc_module(name), dut_("dut", CubeMapBlock::kSeedBits) {
+    dut_.clk_i(clk);
+    dut_.rst_ni(rst_n);
+    dut_.in_valid_i(in_valid_);
+    dut_.in_ready_o(in_ready_);
+    dut_.in_x_i(in_x_);
+    dut_.in_y_i(in_y_);
+    dut_.in_z_i(in_z_);
+    dut_.in_face_log2_i(in_face_log2_);
+    dut_.out_valid_o(out_valid_);
+    dut_.out_ready_i(out_ready_);
+    dut_.out_face_o(out_face_);
+    dut_.out_u_o(out_u_);
+    dut_.out_v_o(out_v_);
+  }
+  void drive(const Txn* item) override {
+    in_valid_.write(item != nullptr);
+    in_x_.write(item ? cube_x(*item) : 0);
+    in_y_.write(item ? cube_y(*item) : 0);
+    in_z_.write(item ? cube_z(*item) : 0);
+    in_face_log2_.write(item ? static_cast<unsigned>(cube_face_log2(*item)) : 0u);
+  }
+  bool accepts(const Txn&) const override { return in_ready_.read(); }
+  void set_out_ready(bool ready) override { out_ready_.write(ready); }
+  bool out_valid() const override { return out_valid_.read(); }
+  Txn out() const override {
+    Txn t;
+    t.f[kCubeFace] = out_face_.read();
+    t.f[kCubeU] = static_cast<uint64_t>(out_u_.read().to_int64()) & kCoordMask;
+    t.f[kCubeV] = static_cast<uint64_t>(out_v_.read().to_int64()) & kCoordMask;
+    return t;
+  }
+
+ private:
+  using Sc = hls::CubeAddressSc;
+  Sc dut_;
+  sc_core::sc_signal<bool> in_valid_{"in_valid"}, in_ready_{"in_ready"};
+  sc_core::sc_signal<Sc::int_t<Sc::kCompW>> in_x_{"in_x"}, in_y_{"in_y"}, in_z_{"in_z"};
+  sc_core::sc_signal<Sc::uint_t<Sc::kLog2W>> in_face_log2_{"in_face_log2"};
+  sc_core::sc_signal<bool> out_valid_{"out_valid"}, out_ready_{"out_ready"};
+  sc_core::sc_signal<Sc::uint_t<Sc::kFaceW>> out_face_{"out_face"};
+  sc_core::sc_signal<Sc::int_t<Sc::kCoordW>> out_u_{"out_u"}, out_v_{"out_v"};
+};
+
+class HlsEngine : public Engine {
+ public:
+  std::string name() const override { return "hls"; }
+  RunResult run(const std::vector<Txn>& items, const RunOptions& options) override {
+    return run_hls<HlsBench>(
+        [](sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n) {
+          return std::make_unique<HlsBench>("bench", clk, rst_n);
+        },
+        items, items.size(), options);
+  }
+};
+
+int16_t saturate(double v) {
+  return static_cast<int16_t>(std::clamp(std::lround(v), -32768L, 32767L));
+}
+
+// A random direction (uniform on the sphere), as doubles.
+std::array<double, 3> random_direction(std::mt19937_64& rng) {
+  std::normal_distribution<double> g;
+  while (true) {
+    const std::array<double, 3> v = {g(rng), g(rng), g(rng)};
+    const double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (len > 1e-6) return {v[0] / len, v[1] / len, v[2] / len};
+  }
+}
+
+std::array<int32_t, 3> scaled(const std::array<double, 3>& dir, double length) {
+  const double s = length * kOne;
+  return {saturate(dir[0] * s), saturate(dir[1] * s), saturate(dir[2] * s)};
+}
+
+// The sizes every directed vector is addressed at: the smallest faces (1 and 2 texels, where
+// u is mostly rounding), a typical one, and the two largest (every bit of s shows at L >= 8).
+constexpr std::array<int, 5> kDirectedLog2 = {0, 1, 8, 9, 10};
+
+// -m or m by a sign bit (-32768 is put directly: +32768 does not exist).
+int32_t with_sign(bool negative, int32_t m) { return negative ? -m : m; }
+
+// The hard vectors (without L).
+std::vector<std::array<int32_t, 3>> hard_vectors() {
+  std::vector<std::array<int32_t, 3>> v;
+  const auto put = [&v](int32_t x, int32_t y, int32_t z) {
+    if (std::max({x, y, z}) > 32767 || std::min({x, y, z}) < -32768)
+      throw std::logic_error("cube-map: a directed component beyond SQ2.14");
+    v.push_back({x, y, z});
+  };
+  // A vector with the components of a "pattern" (a, b, c) placed on the axes (i, j, k).
+  const auto put_at = [&put](int i, int j, int k, int32_t a, int32_t b, int32_t c) {
+    std::array<int32_t, 3> r{};
+    r[static_cast<size_t>(i)] = a;
+    r[static_cast<size_t>(j)] = b;
+    r[static_cast<size_t>(k)] = c;
+    put(r[0], r[1], r[2]);
+  };
+  constexpr std::array<std::array<int, 3>, 3> kPairs = {{{0, 1, 2}, {0, 2, 1}, {1, 2, 0}}};
+
+  // The zero vector; each axis +- at 1 LSB, unit length, full scale, and -32768.
+  put(0, 0, 0);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int32_t m : {1, kOne, 32767, -1, -kOne, -32767, -32768})
+      put_at(axis, (axis + 1) % 3, (axis + 2) % 3, m, 0, 0);
+  }
+  // Cube edges: the two largest |components| equal (each pair, each sign), the third zero,
+  // small of either sign, or one less than them.
+  for (const auto& [i, j, k] : kPairs) {
+    for (int32_t m : {1, 11585, kOne, 32767}) {
+      for (int s = 0; s < 4; ++s) {
+        for (int32_t c : {0, 3000 * m / 32767, -(3000 * m / 32767), m - 1}) {
+          put_at(i, j, k, with_sign(s & 1, m), with_sign(s & 2, m), c);
+        }
+      }
+    }
+    // -32768 twice (|-32768| = 32768 is larger than every positive value).
+    for (int32_t c : {0, 32767, -32767, 100}) put_at(i, j, k, -32768, -32768, c);
+  }
+  // Corners: three equal |components|, every sign.
+  for (int32_t m : {1, 9459, kOne, 32767}) {
+    for (int s = 0; s < 8; ++s) put(with_sign(s & 1, m), with_sign(s & 2, m), with_sign(s & 4, m));
+  }
+  put(-32768, -32768, -32768);
+  // Near edges: the two largest |components| one LSB apart, either one larger, every sign.
+  for (const auto& [i, j, k] : kPairs) {
+    for (int32_t m : {11585, 32766}) {
+      for (int s = 0; s < 4; ++s) {
+        put_at(i, j, k, with_sign(s & 1, m + 1), with_sign(s & 2, m), 1000);
+        put_at(i, j, k, with_sign(s & 1, m), with_sign(s & 2, m + 1), -1000);
+      }
+    }
+    // 32767 against -32768: the negative one is larger.
+    put_at(i, j, k, 32767, -32768, 0);
+    put_at(i, j, k, -32768, 32767, 5);
+  }
+  // The largest component's sign: a generic direction with each axis major, every octant.
+  for (const auto& p : std::array<std::array<int, 3>, 6>{
+           {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}}) {
+    for (int s = 0; s < 8; ++s) {
+      put_at(p[0], p[1], p[2], with_sign(s & 1, 12000), with_sign(s & 2, 5000),
+             with_sign(s & 4, 3000));
+    }
+  }
+  // The extremes against each other and against small values.
+  for (const auto& p : std::array<std::array<int, 3>, 3>{{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}}}) {
+    put_at(p[0], p[1], p[2], -32768, 32767, -32767);
+    put_at(p[0], p[1], p[2], 32767, -32767, 1);
+    put_at(p[0], p[1], p[2], -32768, 1, -1);
+    put_at(p[0], p[1], p[2], 32767, -32768 + 1, 16384);
+  }
+  // Tiny vectors (ratios of small integers).
+  for (const auto& t :
+       std::array<std::array<int32_t, 3>, 4>{{{3, 1, 2}, {2, 5, -4}, {-1, 2, 7}, {7, 7, 3}}}) {
+    put(t[0], t[1], t[2]);
+    put(-t[0], -t[1], -t[2]);
+  }
+  return v;
+}
+
+}  // namespace
+
+Txn cube_item(int32_t x, int32_t y, int32_t z, int face_log2) {
+  Txn t;
+  t.f[kCubeX] = static_cast<uint16_t>(x);
+  t.f[kCubeY] = static_cast<uint16_t>(y);
+  t.f[kCubeZ] = static_cast<uint16_t>(z);
+  t.f[kCubeLog2] = static_cast<uint64_t>(face_log2) & ((1u << fmts::kMipLog2.width()) - 1);
+  return t;
+}
+int16_t cube_x(const Txn& item) { return static_cast<int16_t>(item.f[kCubeX]); }
+int16_t cube_y(const Txn& item) { return static_cast<int16_t>(item.f[kCubeY]); }
+int16_t cube_z(const Txn& item) { return static_cast<int16_t>(item.f[kCubeZ]); }
+int cube_face_log2(const Txn& item) { return static_cast<int>(item.f[kCubeLog2]); }
+
+CubeFaceCoords cube_face_coords(int32_t x, int32_t y, int32_t z) {
+  const int32_t ax = std::abs(x), ay = std::abs(y), az = std::abs(z);
+  CubeFaceCoords c;
+  if (ax >= ay && ax >= az) {
+    c = {x < 0 ? 1u : 0u, x < 0 ? z : -z, -y, ax};
+  } else if (ay >= az) {
+    c = {y < 0 ? 3u : 2u, x, y < 0 ? -z : z, ay};
+  } else {
+    c = {z < 0 ? 5u : 4u, z < 0 ? -x : x, -y, az};
+  }
+  return c;
+}
+
+uint32_t cube_seed_index(uint32_t ma, int seed_bits) {
+  if (ma == 0) return 0;
+  const uint32_t d = (ma << std::countl_zero(ma)) >> 16;
+  return (d >> (15 - seed_bits)) & ((1u << seed_bits) - 1);
+}
+
+CubeMapBlock::CubeMapBlock(const BlockOptions&) {}
+
+const Schema& CubeMapBlock::inputs() const { return kInputs; }
+const Schema& CubeMapBlock::outputs() const { return kOutputs; }
+
+std::vector<Txn> CubeMapBlock::directed_items() const {
+  std::vector<Txn> items;
+  // Every hard vector at the smallest, a typical and the largest face sizes.
+  for (const auto& [x, y, z] : hard_vectors()) {
+    for (int l : kDirectedLog2) items.push_back(cube_item(x, y, z, l));
+  }
+  // One generic vector per face at every face size.
+  for (int l = 0; l <= fmts::kMaxMipLog2; ++l) {
+    for (uint32_t face = 0; face < 6; ++face) {
+      std::array<int32_t, 3> r = {7001, -2999, 4567};
+      std::rotate(r.begin(), r.begin() + (3 - face / 2) % 3, r.end());  // 7001 on axis face / 2
+      if (face % 2) r[face / 2] = -r[face / 2];
+      items.push_back(cube_item(r[0], r[1], r[2], l));
+    }
+  }
+  // Every seed-table index of the dividers' denominator ma (the major |component| in
+  // [2^14, 2^15): index (ma >> 7) & 127 at S = 7, here at the mantissa's bucket middle), the
+  // faces and the face coordinates varied by the index, on the largest face.
+  for (uint32_t i = 0; i < (1u << kSeedBits); ++i) {
+    const auto ma = static_cast<int32_t>(
+        std::lround(16384.0 * (1.0 + (i + 0.5) / static_cast<double>(1u << kSeedBits))));
+    const int32_t sc = ma * static_cast<int32_t>((i * 37) % 101) / 101;
+    const int32_t tc = ma * static_cast<int32_t>((i * 53) % 89) / 89;
+    std::array<int32_t, 3> r{};
+    const uint32_t face = i % 6;
+    r[face / 2] = face % 2 ? -ma : ma;
+    r[(face / 2 + 1) % 3] = i & 8 ? -sc : sc;
+    r[(face / 2 + 2) % 3] = i & 16 ? -tc : tc;
+    items.push_back(cube_item(r[0], r[1], r[2], fmts::kMaxMipLog2));
+  }
+  return items;
+}
+
+std::vector<Txn> CubeMapBlock::random_items(std::mt19937_64& rng, size_t count) const {
+  std::vector<Txn> items;
+  items.reserve(count);
+  std::uniform_real_distribution<double> log_length(-14.0, 1.0);
+  for (size_t i = 0; i < count; ++i) {
+    const uint64_t kind = rng() % 20;
+    const int l = static_cast<int>(rng() % (fmts::kMaxMipLog2 + 1));
+    std::array<int32_t, 3> r{};
+    if (kind < 10) {  // a unit reflection vector, quantized (the coordinate generator's)
+      r = scaled(random_direction(rng), 1.0);
+    } else if (kind < 14) {  // any length 2^-14 .. 2, saturated to the port's range
+      r = scaled(random_direction(rng), std::exp2(log_length(rng)));
+    } else if (kind < 16) {  // raw 16-bit components
+      const uint64_t b = rng();
+      r = {static_cast<int16_t>(b), static_cast<int16_t>(b >> 16), static_cast<int16_t>(b >> 32)};
+    } else if (kind < 18) {  // a cube edge or corner: |components| made equal, any sign
+      r = scaled(random_direction(rng), 1.0);
+      const uint64_t b = rng();
+      const auto src = static_cast<size_t>(b % 3);
+      const auto dst = static_cast<size_t>((src + 1 + (b >> 2) % 2) % 3);
+      const int32_t m = std::abs(r[src]);
+      r[dst] = b & 16 ? -m : m;
+      if (b & 32) r[3 - src - dst] = b & 64 ? -m : m;  // all three: a corner
+    } else {  // on a face's axis or in a coordinate plane: one or two components zeroed
+      r = scaled(random_direction(rng), 1.0);
+      const uint64_t b = rng() % 6;
+      if (b < 3) {
+        r[b] = 0;
+      } else {
+        r[(b + 1) % 3] = 0;
+        r[(b + 2) % 3] = 0;
+      }
+    }
+    items.push_back(cube_item(r[0], r[1], r[2], l));
+  }
+  return items;
+}
+
+std::unique_ptr<Engine> CubeMapBlock::engine(const std::string& level) const {
+  if (level == "golden") return std::make_unique<GoldenEngine>();
+  if (level == "hls") return std::make_unique<HlsEngine>();
+  if (level == "rtl") return make_cube_map_rtl_engine<Vtmu_cube_address>("rtl");
+  throw std::invalid_argument("cube-map: no engine '" + level + "' (golden, hls, rtl)");
+}
+
+namespace {
+constexpr const char* kZero = "zero vector (+X, the face's centre)";
+constexpr const char* kAxis = "an axis (two components zero: the face's centre)";
+constexpr const char* kEdgeXY = "edge |x| = |y| > |z| (to x)";
+constexpr const char* kEdgeXZ = "edge |x| = |z| > |y| (to x)";
+constexpr const char* kEdgeYZ = "edge |y| = |z| > |x| (to y)";
+constexpr const char* kCorner = "corner |x| = |y| = |z| != 0 (to x)";
+constexpr const char* kNearEdge = "near edge (the two largest |components| 1 LSB apart)";
+constexpr const char* kBorder = "|sc| or |tc| = ma != 0 (the face's border)";
+constexpr const char* kEverySeed = "every seed-table index (ma)";
+}  // namespace
+
+std::vector<std::string> CubeMapBlock::coverage_cases() const {
+  std::vector<std::string> cases;
+  for (const char* f : kFaceNames) cases.push_back(fmt::format("face {}", f));
+  cases.insert(cases.end(), {kZero, kAxis, kEdgeXY, kEdgeXZ, kEdgeYZ, kCorner, kNearEdge, kBorder,
+                             "major component -32768", "component -32768", "component +32767",
+                             "sc < 0 (u below the centre)", "sc > 0 (u above the centre)",
+                             "tc < 0 (v below the centre)", "tc > 0 (v above the centre)",
+                             "tiny vector (every |component| < 16 LSB, not zero)",
+                             "short vector (length < 1/4)", "long vector (length > 1.5)"});
+  for (int l = 0; l <= fmts::kMaxMipLog2; ++l) cases.push_back(fmt::format("face_log2 {}", l));
+  cases.push_back(kEverySeed);
+  return cases;
+}
+
+void CubeMapBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&,
+                         Coverage& cov) const {
+  if (index == 0 || index != cover_next_) seen_seed_.clear();
+  cover_next_ = index + 1;
+  const Txn& item = items[index];
+  const int32_t x = cube_x(item), y = cube_y(item), z = cube_z(item);
+  const int32_t a = std::abs(x), b = std::abs(y), c = std::abs(z);
+  const CubeFaceCoords fc = cube_face_coords(x, y, z);
+  const int zeros = (x == 0) + (y == 0) + (z == 0);
+
+  ++cov[fmt::format("face {}", kFaceNames[fc.face])];
+  if (zeros == 3) ++cov[kZero];
+  if (zeros == 2) ++cov[kAxis];
+  if (a != 0 && a == b && b == c) {
+    ++cov[kCorner];
+  } else {
+    if (a == b && a > c) ++cov[kEdgeXY];
+    if (a == c && a > b) ++cov[kEdgeXZ];
+    if (b == c && b > a) ++cov[kEdgeYZ];
+  }
+  std::array<int32_t, 3> m = {a, b, c};
+  std::sort(m.begin(), m.end());
+  if (m[2] - m[1] == 1) ++cov[kNearEdge];
+  if (fc.ma != 0 && (std::abs(fc.sc) == fc.ma || std::abs(fc.tc) == fc.ma)) ++cov[kBorder];
+  if (fc.ma == 32768) ++cov["major component -32768"];
+  if (x == -32768 || y == -32768 || z == -32768) ++cov["component -32768"];
+  if (x == 32767 || y == 32767 || z == 32767) ++cov["component +32767"];
+  if (fc.sc < 0) ++cov["sc < 0 (u below the centre)"];
+  if (fc.sc > 0) ++cov["sc > 0 (u above the centre)"];
+  if (fc.tc < 0) ++cov["tc < 0 (v below the centre)"];
+  if (fc.tc > 0) ++cov["tc > 0 (v above the centre)"];
+  if (zeros < 3 && m[2] < 16) ++cov["tiny vector (every |component| < 16 LSB, not zero)"];
+  const double len2 =
+      (static_cast<double>(a) * a + static_cast<double>(b) * b + static_cast<double>(c) * c) /
+      (double{kOne} * kOne);
+  if (zeros < 3 && len2 < 1.0 / 16) ++cov["short vector (length < 1/4)"];
+  if (len2 > 1.5 * 1.5) ++cov["long vector (length > 1.5)"];
+  const int l = cube_face_log2(item);
+  if (l <= fmts::kMaxMipLog2) ++cov[fmt::format("face_log2 {}", l)];
+  // The seed-table case counts once, when its last index is reached.
+  if (seen_seed_.insert(cube_seed_index(static_cast<uint32_t>(fc.ma), kSeedBits)).second &&
+      seen_seed_.size() == (size_t{1} << kSeedBits)) {
+    ++cov[kEverySeed];
+  }
+}
+
+std::vector<Port> CubeMapBlock::ports() const {
+  return {{"clk_i"},
+          {"rst_ni"},
+          {"in_valid_i"},
+          {"in_ready_o"},
+          {"in_x_i", fmts::kUnitComp.width(), true},
+          {"in_y_i", fmts::kUnitComp.width(), true},
+          {"in_z_i", fmts::kUnitComp.width(), true},
+          {"in_face_log2_i", fmts::kMipLog2.width()},
+          {"out_valid_o"},
+          {"out_ready_i"},
+          {"out_face_o", fmts::kCubeFace.width()},
+          {"out_u_o", fmts::kTexCoord.width(), true},
+          {"out_v_o", fmts::kTexCoord.width(), true}};
+}
+
+}  // namespace tmu::tb

@@ -1,0 +1,276 @@
+#include "render/effect_chain.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <memory>
+
+#include "blocks/coord_gen_block.hpp"
+#include "blocks/cube_map_block.hpp"
+#include "blocks/deflect_block.hpp"
+#include "blocks/normal_encoder_block.hpp"
+#include "blocks/specular_combine_block.hpp"
+#include "blocks/trilinear_block.hpp"
+#include "deflect/bump_map.hpp"
+#include "deflect/coord_tables.hpp"
+#include "deflect/cube_map.hpp"
+#include "deflect/deflect_ideal.hpp"
+#include "deflect/view_maps.hpp"
+#include "formats/formats.hpp"
+#include "texram/trilinear_ideal.hpp"
+
+namespace tmu::render {
+namespace {
+
+using deflect::SphereAngle;
+using glm::dvec3;
+using glm::dvec4;
+
+constexpr const char* kFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+constexpr int kCoordValueBits = 10;  // the coordinate tables' W (the RTL's)
+
+// The register k_s of eq. 6 as RGBA8888.
+uint32_t reflectance_register(const dvec3& k) {
+  const auto ch = [](double v) {
+    return static_cast<uint32_t>(formats::Channel::from_double(255.0 * v).raw());
+  };
+  return texram::rgba(ch(k.r), ch(k.g), ch(k.b), 255);
+}
+
+Rgb8 rgb_of(uint32_t rgba) {
+  return {static_cast<uint8_t>(rgba >> 24), static_cast<uint8_t>(rgba >> 16),
+          static_cast<uint8_t>(rgba >> 8)};
+}
+
+// Runs units one after the other and keeps each with the fragments of its outputs.
+struct Runner {
+  const ChainInput& in;
+  std::vector<UnitRun>& units;
+  std::vector<std::vector<size_t>>& outputs_of;
+
+  std::vector<tb::Txn> run(UnitRun unit, std::vector<size_t> fragments_of_outputs) {
+    run_unit(unit, in.level, {});
+    std::vector<tb::Txn> outputs = unit.result.outputs;
+    units.push_back(std::move(unit));
+    outputs_of.push_back(std::move(fragments_of_outputs));
+    return outputs;
+  }
+
+  // A map read by a trilinear unit at (u, v, lambda) per item; returns RGBA8888 per item.
+  std::vector<uint32_t> sample(const std::string& what, const MapTexture& map,
+                               const std::vector<std::array<int32_t, 3>>& uvl,
+                               std::vector<size_t> fragments_of_outputs) {
+    UnitRun unit;
+    unit.kind = "trilinear";
+    unit.material = in.material.name + "." + what;
+    attach(unit, std::make_shared<tb::TrilinearBlock>(
+                     tb::BlockOptions{}, tb::TrilinearEnv{map.texture, map.sampler, what}));
+    for (const auto& [u, v, lambda] : uvl)
+      unit.items.push_back(tb::trilinear_sample_item(u, v, lambda));
+    std::vector<uint32_t> rgba;
+    for (const tb::Txn& t : run(std::move(unit), std::move(fragments_of_outputs)))
+      rgba.push_back(static_cast<uint32_t>(t.f[0]));
+    return rgba;
+  }
+};
+
+// Texel coordinates of a sphere map at (uN, vN).
+std::vector<std::array<int32_t, 3>> sphere_map_coords(const std::vector<deflect::MapCoords>& c,
+                                                      int log2_side) {
+  std::vector<std::array<int32_t, 3>> uvl;
+  for (const deflect::MapCoords& m : c)
+    uvl.push_back(
+        {deflect::sphere_map_u(m.un, log2_side), deflect::sphere_map_v(m.vn, log2_side), 0});
+  return uvl;
+}
+
+}  // namespace
+
+std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun>& units,
+                                       std::vector<std::vector<size_t>>& outputs_of) {
+  Runner runner{in, units, outputs_of};
+  const host::Material& mat = in.material;
+  const EffectMaps& maps = in.texture.effects;
+  const std::vector<size_t>& frags = in.frags;
+  const size_t n = frags.size();
+  const auto record = [&](size_t k) -> const host::FragmentRecord& { return in.records[frags[k]]; };
+
+  // The normal's angles.
+  UnitRun encoder;
+  encoder.kind = "normal-encoder";
+  encoder.material = mat.name;
+  attach(encoder, std::make_shared<tb::NormalEncoderBlock>(tb::BlockOptions{}));
+  for (size_t k = 0; k < n; ++k) {
+    const auto& nrm = record(k).normal;
+    encoder.items.push_back(tb::normal_item(nrm[0], nrm[1], nrm[2]));
+  }
+  std::vector<SphereAngle> normal;
+  for (const tb::Txn& t : runner.run(std::move(encoder), frags)) {
+    normal.push_back(
+        {static_cast<uint32_t>(t.f[tb::kEncPhi]), static_cast<uint32_t>(t.f[tb::kEncTheta])});
+  }
+
+  // The bump: the texel at (u, v), then the deflection.
+  if (maps.bump) {
+    std::vector<std::array<int32_t, 3>> uvl;
+    for (size_t k = 0; k < n; ++k) uvl.push_back({record(k).u, record(k).v, 0});
+    const std::vector<uint32_t> texels = runner.sample("bump", maps.bump, uvl, frags);
+    UnitRun deflect;
+    deflect.kind = "deflect";
+    deflect.material = mat.name;
+    attach(deflect, std::make_shared<tb::DeflectBlock>(tb::BlockOptions{}));
+    for (size_t k = 0; k < n; ++k) {
+      deflect.items.push_back(
+          tb::deflect_item(normal[k], deflect::unpack_bump(kChainGrid, rgb_of(texels[k]))));
+    }
+    const std::vector<tb::Txn> out = runner.run(std::move(deflect), frags);
+    for (size_t k = 0; k < n; ++k) {
+      normal[k] = {static_cast<uint32_t>(out[k].f[tb::kDflOutPhi]),
+                   static_cast<uint32_t>(out[k].f[tb::kDflOutTheta])};
+    }
+  }
+
+  // The map coordinates, from tables loaded for the camera's view frame.
+  UnitRun coords;
+  coords.kind = "coord-gen";
+  coords.material = mat.name;
+  attach(coords, std::make_shared<tb::CoordGenBlock>(1));
+  coords.items = tb::coord_load_items(deflect::CoordTables(
+      deflect::TableConfig{kChainGrid, kCoordValueBits}, camera_view_frame(in.scene.camera)));
+  for (const SphereAngle& a : normal)
+    coords.items.push_back(tb::coord_request_item(a.phi, a.theta));
+  std::vector<deflect::MapCoords> map_coords;
+  for (const tb::Txn& t : runner.run(std::move(coords), frags))
+    map_coords.push_back(tb::coord_gen_output(t));
+
+  // I_d: the diffuse shading map, or the vertex shade.
+  std::vector<uint32_t> shade;
+  if (maps.diffuse) {
+    shade = runner.sample("diffuse", maps.diffuse,
+                          sphere_map_coords(map_coords, maps.diffuse.log2_side), frags);
+  } else {
+    for (size_t k = 0; k < n; ++k) shade.push_back(record(k).shade);
+  }
+
+  // C_d: the texture, eq. 5.
+  std::vector<uint32_t> colour;
+  for (const tb::Txn& t :
+       runner.run(texture_unit(mat, in.texture, in.records, frags, shade), frags))
+    colour.push_back(static_cast<uint32_t>(t.f[0]));
+  if (!mat.specular && !mat.environment) return colour;
+
+  // E or I_s.
+  std::vector<uint32_t> specular;
+  if (maps.specular || maps.sphere) {
+    const MapTexture& map = maps.specular ? maps.specular : maps.sphere;
+    specular = runner.sample(maps.specular ? "specular" : "environment", map,
+                             sphere_map_coords(map_coords, map.log2_side), frags);
+  } else {
+    const int face_log2 = maps.cube[0].log2_side;
+    UnitRun cube;
+    cube.kind = "cube-map";
+    cube.material = mat.name;
+    attach(cube, std::make_shared<tb::CubeMapBlock>(tb::BlockOptions{}));
+    for (const deflect::MapCoords& c : map_coords)
+      cube.items.push_back(tb::cube_item(c.ur, c.vr, c.wr, face_log2));
+    const std::vector<tb::Txn> address = runner.run(std::move(cube), frags);
+    // Each face is its own map (000 §7: six environment maps); a face no fragment sees is not
+    // read.
+    specular.assign(n, 0);
+    for (uint32_t face = 0; face < 6; ++face) {
+      std::vector<std::array<int32_t, 3>> uvl;
+      std::vector<size_t> which, fragments;
+      for (size_t k = 0; k < n; ++k) {
+        if (address[k].f[tb::kCubeFace] != face) continue;
+        uvl.push_back({static_cast<int32_t>(address[k].f[tb::kCubeU]),
+                       static_cast<int32_t>(address[k].f[tb::kCubeV]), 0});
+        which.push_back(k);
+        fragments.push_back(frags[k]);
+      }
+      if (which.empty()) continue;
+      const std::vector<uint32_t> e = runner.sample(std::string("environment") + kFaceNames[face],
+                                                    maps.cube[face], uvl, fragments);
+      for (size_t j = 0; j < which.size(); ++j) specular[which[j]] = e[j];
+    }
+  }
+
+  // R: the reflectance map at the texture's (u, v, lambda), or the register k_s.
+  std::vector<uint32_t> reflectance;
+  if (maps.reflectance) {
+    std::vector<std::array<int32_t, 3>> uvl;
+    for (size_t k = 0; k < n; ++k) uvl.push_back({record(k).u, record(k).v, record(k).lambda});
+    reflectance = runner.sample("reflectance", maps.reflectance, uvl, frags);
+  } else {
+    reflectance.assign(n, reflectance_register(mat.reflectance.constant));
+  }
+
+  // C = C_d + R . (E | I_s).
+  UnitRun combine;
+  combine.kind = "specular-combine";
+  combine.material = mat.name;
+  attach(combine, std::make_shared<tb::SpecularCombineBlock>());
+  for (size_t k = 0; k < n; ++k) {
+    combine.items.push_back(tb::specular_combine_item(colour[k], specular[k], reflectance[k]));
+  }
+  std::vector<uint32_t> out;
+  for (const tb::Txn& t : runner.run(std::move(combine), frags))
+    out.push_back(static_cast<uint32_t>(t.f[tb::kSpcColour]));
+  return out;
+}
+
+std::vector<dvec4> ideal_effect_chain(const ChainInput& in,
+                                      const std::vector<host::Fragment>& fragments) {
+  const host::Material& mat = in.material;
+  const EffectMaps& maps = in.texture.effects;
+  const deflect::ViewFrame view = camera_view_frame(in.scene.camera);
+  const auto sample = [](const MapTexture& map, double u, double v, double lambda) {
+    const auto s = texram::ideal_sample(*map.texture, map.sampler, u, v, lambda);
+    return dvec4(s[0], s[1], s[2], s[3]);
+  };
+  const auto sphere_sample = [&](const MapTexture& map, const deflect::ideal::Coords& c) {
+    const double side = double(1 << map.log2_side);
+    return sample(map, (c.un + 1) / 2 * side, (1 - c.vn) / 2 * side, 0);
+  };
+  texram::SamplerConfig unshaded = mat.sampler;
+  if (unshaded.combine == texram::Combine::kShade) unshaded.combine = texram::Combine::kOne;
+
+  std::vector<dvec4> out;
+  for (size_t k = 0; k < in.frags.size(); ++k) {
+    const host::Fragment& f = fragments[in.frags[k]];
+    dvec3 n = glm::normalize(f.normal);
+    if (maps.bump) {
+      const dvec4 t = sample(maps.bump, f.uv.x, f.uv.y, 0);  // nearest: a stored texel
+      const Rgb8 texel{static_cast<uint8_t>(t.r), static_cast<uint8_t>(t.g),
+                       static_cast<uint8_t>(t.b)};
+      const auto bump =
+          deflect::ideal::grid_angles(kChainGrid, deflect::unpack_bump(kChainGrid, texel));
+      n = deflect::ideal::deflect(deflect::ideal::to_angles(n), bump);
+    }
+    const deflect::ideal::Coords c = deflect::ideal::map_coords(view, n);
+    dvec4 colour;
+    if (maps.diffuse && mat.sampler.combine == texram::Combine::kShade) {
+      colour =
+          ideal_texture(mat, in.texture, unshaded, f, 0) * sphere_sample(maps.diffuse, c) / 255.0;
+    } else {  // the vertex shade, as the record carries it
+      colour = ideal_texture(mat, in.texture, mat.sampler, f, in.records[in.frags[k]].shade);
+    }
+    if (mat.specular || mat.environment) {
+      dvec4 e;
+      if (maps.specular || maps.sphere) {
+        e = sphere_sample(maps.specular ? maps.specular : maps.sphere, c);
+      } else {
+        const int face_log2 = maps.cube[0].log2_side;
+        const deflect::CubeIdeal a = deflect::cube_address_ideal(c.ur, c.vr, c.wr, face_log2);
+        e = sample(maps.cube[a.face], a.u, a.v, 0);
+      }
+      const dvec3 r = maps.reflectance ? dvec3(sample(maps.reflectance, f.uv.x, f.uv.y, f.lambda))
+                                       : 255.0 * mat.reflectance.constant;
+      for (int ch = 0; ch < 3; ++ch) colour[ch] = std::min(255.0, colour[ch] + e[ch] * r[ch] / 255);
+    }
+    out.push_back(colour);
+  }
+  return out;
+}
+
+}  // namespace tmu::render
