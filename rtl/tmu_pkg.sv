@@ -190,6 +190,16 @@ package tmu_pkg;
   localparam int unsigned CubeFaceFrac = 0;
   typedef logic [CubeFaceW-1:0] cube_face_t;
 
+  // NoiseValue: SQ1.11, Perlin noise P in [-1, 1): lattice values SQ0.7 plus 4 lerp fraction bits
+  localparam int unsigned NoiseValueW = 12;
+  localparam int unsigned NoiseValueFrac = 11;
+  typedef logic signed [NoiseValueW-1:0] noise_value_t;
+
+  // FractalValue: SQ2.14, fractal sum or turbulence of four octaves, |value| <= 1.875
+  localparam int unsigned FractalValueW = 16;
+  localparam int unsigned FractalValueFrac = 14;
+  typedef logic signed [FractalValueW-1:0] fractal_value_t;
+
   // StatCount: UQ32.0, statistics counter (wraps)
   localparam int unsigned StatCountW = 32;
   localparam int unsigned StatCountFrac = 0;
@@ -218,6 +228,42 @@ package tmu_pkg;
 
   // entries of a spherical-to-spherical map block (4 x 4)
   localparam int unsigned S2sBlockEntries = 16;
+
+  // noise hash: row 0 of the 12 x 12 xor table T (bit 0 of T(x) = parity of x & row)
+  localparam int unsigned NoiseXorRow0 = 3787;
+
+  // noise hash: row 1 of the 12 x 12 xor table T (bit 1 of T(x) = parity of x & row)
+  localparam int unsigned NoiseXorRow1 = 1655;
+
+  // noise hash: row 2 of the 12 x 12 xor table T (bit 2 of T(x) = parity of x & row)
+  localparam int unsigned NoiseXorRow2 = 1294;
+
+  // noise hash: row 3 of the 12 x 12 xor table T (bit 3 of T(x) = parity of x & row)
+  localparam int unsigned NoiseXorRow3 = 2489;
+
+  // noise hash: row 4 of the 12 x 12 xor table T (bit 4 of T(x) = parity of x & row)
+  localparam int unsigned NoiseXorRow4 = 883;
+
+  // noise hash: row 5 of the 12 x 12 xor table T (bit 5 of T(x) = parity of x & row)
+  localparam int unsigned NoiseXorRow5 = 2433;
+
+  // noise hash: row 6 of the 12 x 12 xor table T (bit 6 of T(x) = parity of x & row)
+  localparam int unsigned NoiseXorRow6 = 1895;
+
+  // noise hash: row 7 of the 12 x 12 xor table T (bit 7 of T(x) = parity of x & row)
+  localparam int unsigned NoiseXorRow7 = 1745;
+
+  // noise hash: row 8 of the 12 x 12 xor table T (bit 8 of T(x) = parity of x & row)
+  localparam int unsigned NoiseXorRow8 = 4010;
+
+  // noise hash: row 9 of the 12 x 12 xor table T (bit 9 of T(x) = parity of x & row)
+  localparam int unsigned NoiseXorRow9 = 2768;
+
+  // noise hash: row 10 of the 12 x 12 xor table T (bit 10 of T(x) = parity of x & row)
+  localparam int unsigned NoiseXorRow10 = 3597;
+
+  // noise hash: row 11 of the 12 x 12 xor table T (bit 11 of T(x) = parity of x & row)
+  localparam int unsigned NoiseXorRow11 = 489;
 
   // byte planes of a texel (true colour R G B A) or of a CCC block word
   localparam int unsigned Planes = 4;
