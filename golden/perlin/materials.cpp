@@ -1,0 +1,125 @@
+#include "perlin/materials.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace tmu::perlin {
+namespace {
+
+constexpr int64_t kIndexMask = (int64_t{1} << kIndexBits) - 1;
+
+void in_range(const char* name, int64_t value, int64_t lo, int64_t hi) {
+  if (value < lo || value > hi) {
+    throw std::invalid_argument(std::string("material: ") + name + " " + std::to_string(value) +
+                                " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
+  }
+}
+
+uint32_t level(int64_t f, uint32_t gain) {
+  return static_cast<uint32_t>(std::clamp<int64_t>((f * gain) >> 22, 0, 255));
+}
+
+// The coordinates are SolidCoord: the low 24 bits, sign-extended (also keeps wood's squares
+// exact in 64 bits).
+int64_t solid(int64_t raw) {
+  constexpr int kBits = 24;
+  const int64_t low = raw & ((int64_t{1} << kBits) - 1);
+  return low >= (int64_t{1} << (kBits - 1)) ? low - (int64_t{1} << kBits) : low;
+}
+
+uint32_t grey(uint32_t l) { return (l << 16) | (l << 8) | l; }
+
+}  // namespace
+
+void check(const MaterialRegs& r) {
+  in_range("g_t", r.g_t, 0, 0xFFFF);
+  in_range("g_v", r.g_v, 0, 0xFFFF);
+  in_range("g_r", r.g_r, 0, 0xFFFF);
+  in_range("g_w", r.g_w, -0x8000, 0x7FFF);
+  in_range("offset", r.offset, -0x8000, 0x7FFF);
+  in_range("g_l", r.g_l, 0, 0xFFFF);
+  in_range("cutoff", r.cutoff, -0x8000, 0x7FFF);
+  in_range("pw", r.pw, 1, 20);
+  in_range("ph", r.ph, 1, 20);
+  // Mortar on both sides leaves a brick of at least one raw unit.
+  in_range("mortar_w", r.mortar_w, 0, (int64_t{1} << (r.pw - 1)) - 1);
+  in_range("mortar_h", r.mortar_h, 0, (int64_t{1} << (r.ph - 1)) - 1);
+}
+
+uint32_t fire_entry(uint32_t k) {
+  const double x = std::exp(-static_cast<double>(k) / (1 << kFireTableFracBits));
+  return static_cast<uint32_t>(std::floor(x * (1 << kCoordFracBits) + 0.5));
+}
+
+int64_t fire_shape(int64_t v) {
+  const int64_t k =
+      std::clamp<int64_t>(v >> (kCoordFracBits - kFireTableFracBits), 0, kFireTableEntries - 1);
+  return fire_entry(static_cast<uint32_t>(k));
+}
+
+bool in_brick(const MaterialRegs& r, int64_t u, int64_t v) {
+  const int64_t pw = int64_t{1} << r.pw, ph = int64_t{1} << r.ph;
+  const bool even_row = ((v >> r.ph) & 1) == 0;
+  const int64_t u_shifted = even_row ? u + pw / 2 : u;
+  const int64_t ur = u_shifted & (pw - 1), vr = v & (ph - 1);
+  return r.mortar_w < ur && ur < pw - r.mortar_w && r.mortar_h < vr && vr < ph - r.mortar_h;
+}
+
+uint32_t index_value(const NoiseConfig& c, const MaterialRegs& r, int64_t u, int64_t v, int64_t w) {
+  u = solid(u);
+  v = solid(v);
+  w = solid(w);
+  switch (r.kind) {
+    case MaterialKind::kMarble: {
+      const int64_t t = fractal_sums(c, u, v, w).turbulence;
+      return static_cast<uint32_t>((((t * r.g_t) >> 14) + ((v * r.g_v) >> 12)) & kIndexMask);
+    }
+    case MaterialKind::kWood: {
+      const int64_t t = fractal_sums(c, u, v, w).turbulence;
+      // u^2 + v^2 < 2^47 for 24-bit coordinates, times g_r < 2^16: exact in unsigned 64 bits.
+      const uint64_t rings = static_cast<uint64_t>(u * u + v * v) * r.g_r;
+      return static_cast<uint32_t>(
+          (static_cast<int64_t>(rings >> 24) + ((w * r.g_w) >> 12) + ((t * r.g_t) >> 14)) &
+          kIndexMask);
+    }
+    case MaterialKind::kBrick:
+      return static_cast<uint32_t>(((int64_t{fractal_sums(c, u, v, w).turbulence} * r.g_t) >> 14) &
+                                   kIndexMask);
+    case MaterialKind::kFire: {
+      const int64_t f = fractal_sums(c, u, fire_shape(v), w).fractal_sum;
+      return static_cast<uint32_t>(
+          std::clamp<int64_t>(((f * r.g_t) >> 14) + r.offset, 0, kIndexMask));
+    }
+    default:
+      return 0;  // the gases fog and cloud have no colour table
+  }
+}
+
+uint32_t shade_material(const NoiseConfig& c, const MaterialRegs& r, const ColourTables& tables,
+                        int64_t u, int64_t v, int64_t w) {
+  u = solid(u);
+  v = solid(v);
+  w = solid(w);
+  const auto entry = [](const std::array<uint32_t, kColourEntries>& table, uint32_t index) {
+    return table[index >> 8];
+  };
+  switch (r.kind) {
+    case MaterialKind::kFog: {
+      const int64_t f = fractal_sums(c, u, v, w).fractal_sum;
+      return grey(level(f < 0 ? -f : f, r.g_l));
+    }
+    case MaterialKind::kCloud: {
+      const int64_t f = fractal_sums(c, 2 * u, v, w).fractal_sum;
+      const uint32_t l = f > r.cutoff ? level(f, r.g_l) : 0;
+      return (l << 16) | (l << 8) | 0xFF;
+    }
+    case MaterialKind::kBrick:
+      return entry(in_brick(r, u, v) ? tables.main : tables.mortar, index_value(c, r, u, v, w));
+    default:
+      return entry(tables.main, index_value(c, r, u, v, w));
+  }
+}
+
+}  // namespace tmu::perlin
