@@ -10,6 +10,7 @@
 #include <iostream>
 #include <random>
 
+#include "perlin/material_unit.hpp"
 #include "perlin/materials.hpp"
 #include "perlin/materials_ideal.hpp"
 
@@ -188,6 +189,52 @@ TEST(PerlinMaterialsTest, ColourIndexWithinTheBoundOfTheIdeal) {
     std::cout << "material " << int(k) << ": index off by at most " << worst << " entries, "
               << 100.0 * moved / kSamples << " % of samples moved (bound " << bound << ")\n";
     EXPECT_LE(worst, bound);
+  }
+}
+
+// The unit's write port: registers as MaterialRegs, out-of-range values at their limits,
+// unknown registers and table indices beyond 127 ignored; a sample is shade_material of what
+// was written, and the three stages compose to it.
+TEST(PerlinMaterialsTest, UnitWritePortAndStages) {
+  MaterialUnit unit;
+  unit.write_reg(MaterialReg::kKind, 9);
+  EXPECT_EQ(unit.regs().kind, MaterialKind::kFire);  // saturates at the last kind
+  unit.write_reg(MaterialReg::kKind, 2);
+  unit.write_reg(MaterialReg::kGw, 0xFFFF);
+  EXPECT_EQ(unit.regs().g_w, -1);  // two's complement
+  unit.write_reg(MaterialReg::kPw, 40);
+  EXPECT_EQ(unit.regs().pw, 20);
+  unit.write_reg(MaterialReg::kMortarH, 0xFFFF);
+  EXPECT_EQ(unit.regs().mortar_h, (1 << (unit.regs().ph - 1)) - 1);
+  unit.write_reg(MaterialReg::kPh, 3);  // the mortar follows a shrinking period
+  EXPECT_EQ(unit.regs().mortar_h, 3);
+  const MaterialRegs before = unit.regs();
+  unit.write_reg(static_cast<MaterialReg>(200), 5);
+  EXPECT_EQ(unit.regs(), before);
+  unit.write_table(0, 7, 0x12345678);
+  unit.write_table(1, 7, 0xABCDEF);
+  unit.write_table(0, 128, 0x111111);
+  EXPECT_EQ(unit.tables().main[7], 0x345678u);
+  EXPECT_EQ(unit.tables().mortar[7], 0xABCDEFu);
+  EXPECT_EQ(unit.tables().main[0], 0u);
+
+  const NoiseConfig c;
+  const ColourTables t = ramp_tables();
+  for (uint32_t i = 0; i < kColourEntries; ++i) {
+    unit.write_table(0, i, t.main[i]);
+    unit.write_table(1, i, t.mortar[i]);
+  }
+  std::mt19937_64 rng(6);
+  std::uniform_int_distribution<int64_t> any(-(int64_t{1} << 23), (int64_t{1} << 23) - 1);
+  for (uint32_t kind = 0; kind < 6; ++kind) {
+    unit.write_reg(MaterialReg::kKind, kind);
+    for (int n = 0; n < 500; ++n) {
+      const int64_t u = any(rng), v = any(rng), w = any(rng);
+      const uint32_t got = unit.sample(u, v, w);
+      EXPECT_EQ(got, shade_material(c, unit.regs(), unit.tables(), u, v, w));
+      const Shaped s = shape(unit.regs(), u, v, w);
+      EXPECT_EQ(got, colour(unit.regs(), unit.tables(), u, v, w, fractal_sums(c, s.u, s.v, s.w)));
+    }
   }
 }
 

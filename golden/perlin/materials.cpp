@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "perlin/material_unit.hpp"
+
 namespace tmu::perlin {
 namespace {
 
@@ -67,17 +69,16 @@ bool in_brick(const MaterialRegs& r, int64_t u, int64_t v) {
   return r.mortar_w < ur && ur < pw - r.mortar_w && r.mortar_h < vr && vr < ph - r.mortar_h;
 }
 
-uint32_t index_value(const NoiseConfig& c, const MaterialRegs& r, int64_t u, int64_t v, int64_t w) {
-  u = solid(u);
-  v = solid(v);
-  w = solid(w);
+namespace {
+
+// The index value of marble, wood, brick and fire from the sums of the shaped coordinates.
+uint32_t index_from_sums(const MaterialRegs& r, int64_t u, int64_t v, int64_t w,
+                         const FractalSums& sums) {
+  const int64_t t = sums.turbulence, f = sums.fractal_sum;
   switch (r.kind) {
-    case MaterialKind::kMarble: {
-      const int64_t t = fractal_sums(c, u, v, w).turbulence;
+    case MaterialKind::kMarble:
       return static_cast<uint32_t>((((t * r.g_t) >> 14) + ((v * r.g_v) >> 12)) & kIndexMask);
-    }
     case MaterialKind::kWood: {
-      const int64_t t = fractal_sums(c, u, v, w).turbulence;
       // u^2 + v^2 < 2^47 for 24-bit coordinates, times g_r < 2^16: exact in unsigned 64 bits.
       const uint64_t rings = static_cast<uint64_t>(u * u + v * v) * r.g_r;
       return static_cast<uint32_t>(
@@ -85,41 +86,59 @@ uint32_t index_value(const NoiseConfig& c, const MaterialRegs& r, int64_t u, int
           kIndexMask);
     }
     case MaterialKind::kBrick:
-      return static_cast<uint32_t>(((int64_t{fractal_sums(c, u, v, w).turbulence} * r.g_t) >> 14) &
-                                   kIndexMask);
-    case MaterialKind::kFire: {
-      const int64_t f = fractal_sums(c, u, fire_shape(v), w).fractal_sum;
+      return static_cast<uint32_t>(((t * r.g_t) >> 14) & kIndexMask);
+    case MaterialKind::kFire:
       return static_cast<uint32_t>(
           std::clamp<int64_t>(((f * r.g_t) >> 14) + r.offset, 0, kIndexMask));
-    }
     default:
       return 0;  // the gases fog and cloud have no colour table
   }
 }
 
-uint32_t shade_material(const NoiseConfig& c, const MaterialRegs& r, const ColourTables& tables,
-                        int64_t u, int64_t v, int64_t w) {
+}  // namespace
+
+Shaped shape(const MaterialRegs& r, int64_t u, int64_t v, int64_t w) {
   u = solid(u);
   v = solid(v);
   w = solid(w);
-  const auto entry = [](const std::array<uint32_t, kColourEntries>& table, uint32_t index) {
-    return table[index >> 8];
+  if (r.kind == MaterialKind::kCloud) return {2 * u, v, w};
+  if (r.kind == MaterialKind::kFire) return {u, fire_shape(v), w};
+  return {u, v, w};
+}
+
+uint32_t colour(const MaterialRegs& r, const ColourTables& tables, int64_t u, int64_t v, int64_t w,
+                const FractalSums& sums) {
+  u = solid(u);
+  v = solid(v);
+  w = solid(w);
+  const auto entry = [&](const std::array<uint32_t, kColourEntries>& table) {
+    return table[index_from_sums(r, u, v, w, sums) >> 8];
   };
   switch (r.kind) {
     case MaterialKind::kFog: {
-      const int64_t f = fractal_sums(c, u, v, w).fractal_sum;
+      const int64_t f = sums.fractal_sum;
       return grey(level(f < 0 ? -f : f, r.g_l));
     }
     case MaterialKind::kCloud: {
-      const int64_t f = fractal_sums(c, 2 * u, v, w).fractal_sum;
-      const uint32_t l = f > r.cutoff ? level(f, r.g_l) : 0;
+      const uint32_t l = sums.fractal_sum > r.cutoff ? level(sums.fractal_sum, r.g_l) : 0;
       return (l << 16) | (l << 8) | 0xFF;
     }
     case MaterialKind::kBrick:
-      return entry(in_brick(r, u, v) ? tables.main : tables.mortar, index_value(c, r, u, v, w));
+      return entry(in_brick(r, u, v) ? tables.main : tables.mortar);
     default:
-      return entry(tables.main, index_value(c, r, u, v, w));
+      return entry(tables.main);
   }
+}
+
+uint32_t index_value(const NoiseConfig& c, const MaterialRegs& r, int64_t u, int64_t v, int64_t w) {
+  const Shaped s = shape(r, u, v, w);
+  return index_from_sums(r, solid(u), solid(v), solid(w), fractal_sums(c, s.u, s.v, s.w));
+}
+
+uint32_t shade_material(const NoiseConfig& c, const MaterialRegs& r, const ColourTables& tables,
+                        int64_t u, int64_t v, int64_t w) {
+  const Shaped s = shape(r, u, v, w);
+  return colour(r, tables, u, v, w, fractal_sums(c, s.u, s.v, s.w));
 }
 
 }  // namespace tmu::perlin
