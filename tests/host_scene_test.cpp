@@ -340,7 +340,7 @@ TEST(HostSceneTest, FootprintParsesWithDefaultsAndChecksItsFields) {
 }
 
 TEST(HostSceneTest, ReservedEffectsAreNotImplementedYet) {
-  for (const char* effect : {"detail", "procedural"}) {
+  for (const char* effect : {"detail"}) {
     Json j = base_scene();
     j["materials"]["label"][effect] = Json::object();
     expect_error(j, std::string("materials.label.") + effect,
@@ -420,6 +420,62 @@ TEST(HostSceneTest, DeflectionEffectRulesNameTheField) {
                "materials.label.environment.image", "rendered from the room");
   expect_error(with("environment", {{"image", "missing.png"}}), "materials.label.environment.image",
                "file not found");
+}
+
+TEST(HostSceneTest, ProceduralMaterialsParseWithDefaults) {
+  Json j = base_scene();
+  j["materials"]["label"] = {
+      {"procedural",
+       {{"material", "brick"}, {"scale", 4}, {"brick", {0.5, 0.25}}, {"mortar", {0.02, 0.03}}}}};
+  j["materials"]["floor"] = {{"procedural", {{"material", "fire"}, {"offset", -10}}},
+                             {"combine", "one"}};
+  const Scene s = parse(j);
+  const Material& brick = s.materials[1];
+  ASSERT_TRUE(brick.procedural);
+  EXPECT_EQ(brick.procedural->kind, perlin::MaterialKind::kBrick);
+  EXPECT_EQ(brick.solid_scale, 4);
+  EXPECT_EQ(brick.procedural->brick, glm::dvec2(0.5, 0.25));
+  EXPECT_EQ(brick.procedural->mortar, glm::dvec2(0.02, 0.03));
+  EXPECT_FALSE(brick.procedural->colours.empty());  // the material's default stops
+  EXPECT_EQ(brick.sampler.combine, texram::Combine::kShade);
+  const Material& fire = s.materials[0];
+  EXPECT_EQ(fire.procedural->kind, perlin::MaterialKind::kFire);
+  EXPECT_EQ(fire.procedural->offset, -10);
+  EXPECT_EQ(fire.sampler.combine, texram::Combine::kOne);
+  EXPECT_EQ(fire.solid_scale, 1);
+}
+
+TEST(HostSceneTest, ProceduralRulesNameTheField) {
+  const auto with = [](const Json& procedural) {
+    Json j = base_scene();
+    j["materials"]["label"] = {{"procedural", procedural}};
+    return j;
+  };
+  expect_error(with({{"scale", 2}}), "materials.label.procedural.material", "missing");
+  expect_error(with({{"material", "granite"}}), "materials.label.procedural.material", "marble");
+  expect_error(with({{"material", "marble"}, {"rings", 3}}), "materials.label.procedural.rings",
+               "not a key of the marble material");
+  expect_error(with({{"material", "fog"}, {"colours", Json::array()}}),
+               "materials.label.procedural.colours", "not a key of the fog material");
+  expect_error(with({{"material", "marble"}, {"scale", 0}}), "materials.label.procedural.scale",
+               "above 0");
+  expect_error(with({{"material", "wood"}, {"slope", 200}}), "materials.label.procedural.slope",
+               "-128..");
+  expect_error(with({{"material", "cloud"}, {"cutoff", 3}}), "materials.label.procedural.cutoff",
+               "-2..");
+  expect_error(with({{"material", "brick"}, {"brick", {0.3, 0.5}}}),
+               "materials.label.procedural.brick[0]", "power of two");
+  expect_error(with({{"material", "brick"}, {"brick", {0.0625, 0.5}}}),
+               "materials.label.procedural.brick", "leaves no brick");
+  expect_error(with({{"material", "brick"}, {"mortar", {0.6, 0.01}}}),
+               "materials.label.procedural.mortar[0]", "half the brick period");
+  expect_error(with({{"material", "marble"}, {"colours", {{0.5, {1, 0, 0}}, {0.2, {0, 0, 1}}}}}),
+               "materials.label.procedural.colours[1][0]", "increasing");
+  expect_error(with({{"material", "marble"}, {"colours", {{1.5, {1, 0, 0}}}}}),
+               "materials.label.procedural.colours[0][0]", "0..1");
+  Json j = with({{"material", "marble"}});
+  j["materials"]["label"]["texture"] = {{"pattern", "checker"}};
+  expect_error(j, "materials.label.texture", "unknown key");
 }
 
 TEST(HostSceneTest, SyntaxErrorNamesLineAndColumn) {

@@ -183,7 +183,7 @@ class Rasterizer {
     f.r1 = v.r1;
     f.r2 = v.r2;
     f.lambda = std::log2(std::max({glm::length(v.r1), glm::length(v.r2), kMinFootprint}));
-    f.solid = v.solid;
+    f.solid = v.solid * scene_.materials[static_cast<size_t>(t.material)].solid_scale;
     const double n = glm::length(v.normal);
     f.normal = n > 0 && std::isfinite(n) ? v.normal / n : t.face_normal;
     const glm::dvec3 to_eye = frame_.eye - v.world;

@@ -17,7 +17,7 @@ namespace tmu::host {
 namespace {
 
 // Material keys reserved for the blocks that do not exist yet.
-constexpr std::string_view kReservedEffects[] = {"detail", "procedural"};
+constexpr std::string_view kReservedEffects[] = {"detail"};
 
 // The TEXRAM holds power-of-two sides up to 2^10 (000 §2, formats.def MaxMipLog2); the CCC
 // low-cost unit reads level 0 only and takes any side a TexSize holds.
@@ -146,11 +146,22 @@ Material parse_material(const JsonNode& node, const std::string& name, const std
     if (auto e = node.find(effect))
       e->fail(fmt::format("the {} effect is not implemented yet", effect));
   }
-  node.allow_keys({"texture", "config", "channel", "filter", "border", "border_colour", "combine",
-                   "constant", "unit", "mipmaps", "footprint", "shading", "shading_map_size",
-                   "bump", "specular", "environment", "reflectance"});
   Material m;
   m.name = name;
+  if (auto p = node.find("procedural")) {
+    // No texture: the material unit computes the colour; eq. 5 with the vertex shade or not.
+    node.allow_keys({"procedural", "combine"});
+    parse_procedural(*p, m);
+    m.sampler.combine = texram::Combine::kShade;
+    if (auto combine = node.find("combine")) {
+      if (combine->one_of({"one", "shade"}) == "one") m.sampler.combine = texram::Combine::kOne;
+    }
+    m.texture.width = m.texture.height = 1;
+    return m;
+  }
+  node.allow_keys({"texture", "config", "channel", "filter", "border", "border_colour", "combine",
+                   "constant", "unit", "mipmaps", "footprint", "shading", "shading_map_size",
+                   "bump", "specular", "environment", "reflectance", "procedural"});
   m.texture = parse_texture(node.at("texture"), folder);
   const bool ccc_file = m.texture.kind == TextureSource::Kind::kCcc;
 

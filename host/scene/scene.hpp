@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "footprint/footprint.hpp"
+#include "perlin/colour_table.hpp"
+#include "perlin/materials.hpp"
 #include "texram/sampler_config.hpp"
 
 namespace tmu::host {
@@ -68,6 +70,23 @@ struct Reflectance {
   std::optional<TextureSource> map;
 };
 
+// A procedural material (002 §4.2): the material unit computes the colour from the solid
+// texture coordinates (scenes/README.md "procedural"); physical values here, the host turns
+// them into the unit's registers and colour tables.
+struct Procedural {
+  perlin::MaterialKind kind = perlin::MaterialKind::kMarble;
+  std::vector<perlin::ColourStop> colours, mortar_colours;
+  double turbulence = 32;  // g_t: colour entries per unit of turbulence / fractal sum
+  double stripes = 8;      // marble g_v: entries per unit of v
+  double rings = 16;       // wood g_r: entries per unit of u^2 + v^2
+  double slope = 2;        // wood g_w: entries per unit of w
+  double offset = 64;      // fire: index offset, entries
+  double gain = 255;       // fog, cloud g_l: 8-bit levels per unit of the fractal sum
+  double cutoff = 0;       // cloud
+  glm::dvec2 brick{1, 0.5};           // brick period (W + 2 M_W, H + 2 M_H): powers of two
+  glm::dvec2 mortar{0.05, 0.05};      // M_W, M_H
+};
+
 struct Material {
   std::string name;
   TextureSource texture;
@@ -87,6 +106,10 @@ struct Material {
   std::optional<Specular> specular;
   std::optional<Environment> environment;
   Reflectance reflectance;  // applies to the specular map or the environment
+  // Procedural: no texture; the solid coordinates are the object-space position times
+  // solid_scale.
+  std::optional<Procedural> procedural;
+  double solid_scale = 1;
   // The deflection chain (normal encoder, coordinate generator, ...) is built for this material.
   bool uses_normal() const { return shading == Shading::kMaps || environment.has_value(); }
 };

@@ -23,6 +23,8 @@ TextureSource parse_texture(const JsonNode& node, const std::string& folder);
 // The material keys of the deflection chain (shading, shading_map_size, bump, specular,
 // environment, reflectance) into `material`, whose texture is already parsed.
 void parse_effects(const JsonNode& node, const std::string& folder, Material& material);
+// "procedural": {...} into `material` (its scale into solid_scale).
+void parse_procedural(const JsonNode& node, Material& material);
 
 // `relative` against `folder` (absolute paths are kept); the file must exist, else `node`
 // fails with "file not found: <resolved path>".

@@ -90,6 +90,10 @@ Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level
     const host::Material& mat = scene.materials[m];
     const std::string field = "materials." + mat.name + ".texture";
     MaterialTexture mt;
+    if (mat.procedural) {  // no texture: the material unit computes the colour
+      textures_.push_back(std::move(mt));
+      continue;
+    }
     try {
       const bool ccc_file = mat.texture.kind == host::TextureSource::Kind::kCcc;
       if (mat.unit == host::Material::Unit::kLowcost) {
@@ -165,6 +169,11 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
     const MaterialTexture& tex = textures_[m];
     const bool lowcost = mat.unit == host::Material::Unit::kLowcost;
 
+    if (mat.procedural) {
+      throw InputError(scene_.path, "materials." + mat.name + ".procedural",
+                       "procedural materials are not in the renderer yet (texsim cosim perlin, "
+                       "turbulence and the golden materials are)");
+    }
     if (level_ == Level::kIdeal && mat.uses_normal()) {
       const std::vector<glm::dvec4> c =
           ideal_effect_chain({scene_, mat, tex, level_, records, frags}, *fragments);
