@@ -76,15 +76,15 @@ struct Reflectance {
 struct Procedural {
   perlin::MaterialKind kind = perlin::MaterialKind::kMarble;
   std::vector<perlin::ColourStop> colours, mortar_colours;
-  double turbulence = 32;  // g_t: colour entries per unit of turbulence / fractal sum
-  double stripes = 8;      // marble g_v: entries per unit of v
-  double rings = 16;       // wood g_r: entries per unit of u^2 + v^2
-  double slope = 2;        // wood g_w: entries per unit of w
-  double offset = 64;      // fire: index offset, entries
-  double gain = 255;       // fog, cloud g_l: 8-bit levels per unit of the fractal sum
-  double cutoff = 0;       // cloud
-  glm::dvec2 brick{1, 0.5};           // brick period (W + 2 M_W, H + 2 M_H): powers of two
-  glm::dvec2 mortar{0.05, 0.05};      // M_W, M_H
+  double turbulence = 32;         // g_t: colour entries per unit of turbulence / fractal sum
+  double stripes = 8;             // marble g_v: entries per unit of v
+  double rings = 16;              // wood g_r: entries per unit of u^2 + v^2
+  double slope = 2;               // wood g_w: entries per unit of w
+  double offset = 64;             // fire: index offset, entries
+  double gain = 255;              // fog, cloud g_l: 8-bit levels per unit of the fractal sum
+  double cutoff = 0;              // cloud
+  glm::dvec2 brick{1, 0.5};       // brick period (W + 2 M_W, H + 2 M_H): powers of two
+  glm::dvec2 mortar{0.05, 0.05};  // M_W, M_H
 };
 
 struct Material {

@@ -10,6 +10,7 @@
 #include "blocks/footprint_block.hpp"
 #include "blocks/mipgen_block.hpp"
 #include "blocks/normal_encoder_block.hpp"
+#include "blocks/perlin_block.hpp"
 #include "blocks/specular_combine_block.hpp"
 #include "blocks/trilinear_block.hpp"
 
@@ -42,7 +43,13 @@ std::vector<BlockInfo> block_list() {
            "Newton-Raphson dividers and angle tables"},
           {"specular-combine",
            "Specular combine (000 §7 eq. 6, §8 eq. 7): per channel min(255, D + E R / 255), "
-           "alpha from D"}};
+           "alpha from D"},
+          {"perlin",
+           "Procedural noise unit (002 §4.1): (u, v, w) -> P, xor-table hash, fade table, seven "
+           "lerps"},
+          {"turbulence",
+           "Fractal sums of four octaves (002 §4.1.1): fractal sum and turbulence; four noise "
+           "units pipelined, or one shared (--fractal shared, 4 clocks per sample)"}};
 }
 
 std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& options) {
@@ -56,6 +63,8 @@ std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& o
   if (name == "deflect") return std::make_unique<DeflectBlock>(options);
   if (name == "normal-encoder") return std::make_unique<NormalEncoderBlock>(options);
   if (name == "specular-combine") return std::make_unique<SpecularCombineBlock>();
+  if (name == "perlin") return std::make_unique<PerlinBlock>();
+  if (name == "turbulence") return std::make_unique<TurbulenceBlock>(options);
   std::string known;
   for (const BlockInfo& b : block_list()) known += (known.empty() ? "" : ", ") + b.name;
   throw std::invalid_argument("unknown block '" + name + "' (blocks: " + known + ")");

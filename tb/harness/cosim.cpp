@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <ostream>
 
@@ -92,9 +93,12 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
       scored.outputs[static_cast<size_t>(o.inject_fault)].f[0] ^= 1;  // a deliberate wrong bit
     }
     const Comparison c = compare(block.outputs(), golden, scored);
-    fmt::print(log, "  {:<8} {:>10} outputs  {:>8.3f} s  {:>12}  {:>10} cycles  {}\n", level,
-               run.outputs.size(), run.seconds, rate(run.outputs.size(), run.seconds), run.cycles,
-               c.match() ? "MATCH" : "MISMATCH");
+    // Cycles per transaction: the throughput (a pipelined block under no back-pressure nears 1).
+    const double per_txn = static_cast<double>(run.cycles) /
+                           static_cast<double>(std::max<size_t>(1, run.outputs.size()));
+    fmt::print(log, "  {:<8} {:>10} outputs  {:>8.3f} s  {:>12}  {:>10} cycles {:>6.2f}/txn  {}\n",
+               level, run.outputs.size(), run.seconds, rate(run.outputs.size(), run.seconds),
+               run.cycles, per_txn, c.match() ? "MATCH" : "MISMATCH");
     res.runs[level] = run;
     if (c.match()) continue;
 

@@ -31,7 +31,8 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
     // footprint overrides; empty: drawn from the seed
     std::optional<int> max_probes;
     std::string q_rule, fp_widths;
-    std::string encoder;  // normal-encoder: S,E,M
+    std::string encoder;                // normal-encoder: S,E,M
+    std::string fractal = "pipelined";  // turbulence: pipelined | shared
   };
   auto args = std::make_shared<Args>();
   cmd->add_option("block", args->block, "Block to co-simulate")->required();
@@ -94,6 +95,11 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
   cmd->add_option("--encoder", args->encoder,
                   "normal-encoder: seed-table bits S, angle-table exponent levels E and mantissa "
                   "bits M (default 7,4,5; rtl is verilated at 7,4,5 and 7,1,7)");
+  cmd->add_option("--fractal", args->fractal,
+                  "turbulence: four noise units, one sample per clock (pipelined), or one noise "
+                  "unit for the four octaves, one sample per 4 clocks (shared)")
+      ->check(CLI::IsMember({"pipelined", "shared"}))
+      ->capture_default_str();
   cmd->add_flag(
       "--no-lookahead", [args](int64_t) { args->block_options.lookahead = false; },
       "ccc-bilinear: disable the neighbour prefetch");
@@ -185,6 +191,7 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
             "'" + args->encoder + "' is not S,E,M with S 2..12, E 1..8, M 2..10 like 7,4,5");
       }
     }
+    b.fractal_shared = args->fractal == "shared";
     const auto block = tb::make_block(args->block, args->block_options);
     const tb::CosimResult r = tb::run_cosim(*block, args->cosim, std::cout);
     exit_code.value = r.pass ? 0 : 1;
