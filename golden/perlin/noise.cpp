@@ -36,12 +36,28 @@ void check(const NoiseConfig& c) {
   in_range("lerp_extra_bits X", c.lerp_extra_bits, 0, 8);
 }
 
-uint32_t xor_table(uint32_t x) {
+namespace {
+
+uint32_t scramble(uint32_t x) {
   uint32_t y = 0;
   for (int j = 0; j < kLatticeBits; ++j)
     y |= static_cast<uint32_t>(std::popcount(x & kXorRows[static_cast<size_t>(j)]) & 1) << j;
   return y;
 }
+
+// T for every 12-bit value, computed once: the model's speed, not its definition.
+const std::array<uint16_t, 1u << kLatticeBits>& scramble_table() {
+  static const auto table = [] {
+    std::array<uint16_t, 1u << kLatticeBits> t{};
+    for (uint32_t x = 0; x < t.size(); ++x) t[x] = static_cast<uint16_t>(scramble(x));
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
+
+uint32_t xor_table(uint32_t x) { return scramble_table()[x & kLatticeMask]; }
 
 int32_t lattice_value(uint32_t x1, uint32_t x2, uint32_t x3) {
   uint32_t h = xor_table(x1 & kLatticeMask);
