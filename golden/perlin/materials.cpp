@@ -132,13 +132,14 @@ uint32_t colour(const MaterialRegs& r, const ColourTables& tables, int64_t u, in
 
 uint32_t index_value(const NoiseConfig& c, const MaterialRegs& r, int64_t u, int64_t v, int64_t w) {
   const Shaped s = shape(r, u, v, w);
-  return index_from_sums(r, solid(u), solid(v), solid(w), fractal_sums(c, s.u, s.v, s.w));
+  return index_from_sums(r, solid(u), solid(v), solid(w),
+                         port_sums(c, fractal_sums(c, s.u, s.v, s.w)));
 }
 
 uint32_t shade_material(const NoiseConfig& c, const MaterialRegs& r, const ColourTables& tables,
                         int64_t u, int64_t v, int64_t w) {
   const Shaped s = shape(r, u, v, w);
-  return colour(r, tables, u, v, w, fractal_sums(c, s.u, s.v, s.w));
+  return colour(r, tables, u, v, w, port_sums(c, fractal_sums(c, s.u, s.v, s.w)));
 }
 
 }  // namespace tmu::perlin

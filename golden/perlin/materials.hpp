@@ -15,7 +15,8 @@
 //   brick  (turbulence)  i = T g_t >> 14, from the brick table or the mortar table
 //   fire   (fractal sum) i = clamp(F g_t >> 14 + offset, 0, 2^15 - 1)   (saturates: a flame's
 //                        spectrum has no wrap)
-// T = turbulence(u, v, w), F = a fractal sum (noise.hpp, SQ2.14); g_t, g_v, g_r UQ8.8 (entries
+// T = turbulence(u, v, w), F = a fractal sum (noise.hpp, as the ports carry them: port_sums,
+// SQ2.14); g_t, g_v, g_r UQ8.8 (entries
 // per unit), g_w, offset SQ8.8 / IQ7.8.
 //
 // Brick (002 §4.2.1, Fig. 4.12): the brick period (W + 2 M_W) x (H + 2 M_H) is a power of two

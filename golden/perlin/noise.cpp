@@ -109,4 +109,11 @@ FractalSums fractal_sums(const NoiseConfig& c, int64_t u, int64_t v, int64_t w) 
   return s;
 }
 
+FractalSums port_sums(const NoiseConfig& c, const FractalSums& s) {
+  constexpr int kPortX = 4;
+  const int d = c.lerp_extra_bits - kPortX;
+  const auto convert = [d](int32_t v) { return d > 0 ? (v + (1 << (d - 1))) >> d : v * (1 << -d); };
+  return {convert(s.fractal_sum), convert(s.turbulence)};
+}
+
 }  // namespace tmu::perlin

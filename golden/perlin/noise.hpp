@@ -92,6 +92,11 @@ struct FractalSums {
 };
 FractalSums fractal_sums(const NoiseConfig& config, int64_t u, int64_t v, int64_t w);
 
+// The sums as the ports carry them (FractalValue SQ2.14, the default X = 4): from SQ2.(10 + X)
+// rounded half up (X > 4) or shifted up (X < 4). The identity at the default widths; the
+// materials read this, so that the sweep's other widths keep the same scale.
+FractalSums port_sums(const NoiseConfig& config, const FractalSums& sums);
+
 // The raw value of 1.0 in P's format and in the sums' format.
 constexpr int32_t noise_one(const NoiseConfig& c) { return int32_t{1} << (7 + c.lerp_extra_bits); }
 constexpr int32_t sum_one(const NoiseConfig& c) { return int32_t{1} << (10 + c.lerp_extra_bits); }

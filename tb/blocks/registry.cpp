@@ -8,6 +8,7 @@
 #include "blocks/cube_map_block.hpp"
 #include "blocks/deflect_block.hpp"
 #include "blocks/footprint_block.hpp"
+#include "blocks/material_block.hpp"
 #include "blocks/mipgen_block.hpp"
 #include "blocks/normal_encoder_block.hpp"
 #include "blocks/perlin_block.hpp"
@@ -49,7 +50,10 @@ std::vector<BlockInfo> block_list() {
            "lerps"},
           {"turbulence",
            "Fractal sums of four octaves (002 §4.1.1): fractal sum and turbulence; four noise "
-           "units pipelined, or one shared (--fractal shared, 4 clocks per sample)"}};
+           "units pipelined, or one shared (--fractal shared, 4 clocks per sample)"},
+          {"material",
+           "Material unit (002 §4.2): registers and colour tables behind a write port; (u, v, "
+           "w) -> shape -> fractal sums -> marble, wood, brick, fog, cloud, fire RGB888"}};
 }
 
 std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& options) {
@@ -65,6 +69,7 @@ std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& o
   if (name == "specular-combine") return std::make_unique<SpecularCombineBlock>();
   if (name == "perlin") return std::make_unique<PerlinBlock>();
   if (name == "turbulence") return std::make_unique<TurbulenceBlock>(options);
+  if (name == "material") return std::make_unique<MaterialBlock>(options);
   std::string known;
   for (const BlockInfo& b : block_list()) known += (known.empty() ? "" : ", ") + b.name;
   throw std::invalid_argument("unknown block '" + name + "' (blocks: " + known + ")");

@@ -51,8 +51,8 @@ struct BlockOptions {
   // normal-encoder: the encoder's seed and angle-table widths (grid A = 9, the ports'); the
   // rtl engine is verilated at the default and at the paper's linear index E = 1, M = 7.
   deflect::EncoderConfig encoder;
-  // turbulence: the fractal sums on one noise unit shared by the four octaves (one sample per
-  // 4 clocks, the thesis's design) instead of four pipelined units (one per clock).
+  // turbulence, material: the fractal sums on one noise unit shared by the four octaves (one
+  // sample per 4 clocks, the thesis's design) instead of four pipelined units (one per clock).
   bool fractal_shared = false;
 };
 

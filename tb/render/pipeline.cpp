@@ -15,6 +15,7 @@
 #include "common/image.hpp"
 #include "footprint/footprint_ideal.hpp"
 #include "render/effect_chain.hpp"
+#include "render/procedural_chain.hpp"
 #include "render/texture_source.hpp"
 #include "texram/mipgen_stream.hpp"
 #include "texram/trilinear.hpp"
@@ -170,9 +171,20 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
     const bool lowcost = mat.unit == host::Material::Unit::kLowcost;
 
     if (mat.procedural) {
-      throw InputError(scene_.path, "materials." + mat.name + ".procedural",
-                       "procedural materials are not in the renderer yet (texsim cosim perlin, "
-                       "turbulence and the golden materials are)");
+      const ChainInput in{scene_, mat, tex, level_, records, frags};
+      if (level_ == Level::kIdeal) {
+        const std::vector<glm::dvec4> c = ideal_procedural(in, *fragments);
+        for (size_t k = 0; k < frags.size(); ++k) {
+          (*ideal_rgba)[frags[k]] = c[k];
+          out[frags[k]] = rgba_of(c[k]);
+        }
+      } else {
+        const std::vector<uint32_t> rgba = run_procedural(in, units_, fragment_of_output_);
+        for (size_t k = 0; k < frags.size(); ++k) out[frags[k]] = rgba[k];
+      }
+      done += frags.size();
+      if (progress) progress(done, records.size());
+      continue;
     }
     if (level_ == Level::kIdeal && mat.uses_normal()) {
       const std::vector<glm::dvec4> c =

@@ -7,6 +7,7 @@
 //   "footprint"      : the footprint unit (000 §10): N trilinear probes per fragment, averaged;
 //                      it holds its own trilinear unit (host or mipgen pyramid as above)
 //   shading maps, "bump", "environment": the deflection chain (render/effect_chain.hpp)
+//   "procedural"     : the material unit (render/procedural_chain.hpp), no texture
 #pragma once
 
 #include <functional>

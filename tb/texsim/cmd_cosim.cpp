@@ -96,8 +96,8 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
                   "normal-encoder: seed-table bits S, angle-table exponent levels E and mantissa "
                   "bits M (default 7,4,5; rtl is verilated at 7,4,5 and 7,1,7)");
   cmd->add_option("--fractal", args->fractal,
-                  "turbulence: four noise units, one sample per clock (pipelined), or one noise "
-                  "unit for the four octaves, one sample per 4 clocks (shared)")
+                  "turbulence, material: four noise units, one sample per clock (pipelined), or "
+                  "one noise unit for the four octaves, one sample per 4 clocks (shared)")
       ->check(CLI::IsMember({"pipelined", "shared"}))
       ->capture_default_str();
   cmd->add_flag(

@@ -24,6 +24,7 @@
 #include "texsim/sweep_deflection.hpp"
 #include "texsim/sweep_footprint.hpp"
 #include "texsim/sweep_footprint_setup.hpp"
+#include "texsim/sweep_perlin.hpp"
 #include "texsim/sweep_support.hpp"
 
 namespace tmu::texsim {
@@ -184,17 +185,23 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       "deflection: bump and reflection mapping (001 §4-5) per sphere grid and table widths "
       "A,E,M,W: angle\n"
       "errors of the deflected normal and the reflection vector, PSNR, table bits, hit rate, "
-      "cells (docs/deflection.md).");
+      "cells (docs/deflection.md).\n"
+      "perlin: the noise unit's widths F,S,B,X: noise and fractal-sum error against the ideal, "
+      "PSNR of each\n"
+      "procedural material of a scene, fade-table bits, speed, cells; both fractal "
+      "configurations (docs/perlin.md).");
   auto args = std::make_shared<SweepArgs>();
   auto fp = std::make_shared<FootprintSweepArgs>();
-  cmd->add_option("block", args->block, "trilinear | footprint | footprint-setup | deflection")
+  cmd->add_option("block", args->block,
+                  "trilinear | footprint | footprint-setup | deflection | perlin")
       ->required()
-      ->check(CLI::IsMember({"trilinear", "footprint", "footprint-setup", "deflection"}));
+      ->check(CLI::IsMember({"trilinear", "footprint", "footprint-setup", "deflection", "perlin"}));
   cmd->add_option("--settings", args->settings,
                   "trilinear: width settings S,W,L separated by ';' (footprint-setup: D,T,F; "
                   "default " +
                       FootprintSetupSweepArgs{}.settings + "; deflection: A,E,M,W, default " +
-                      DeflectionSweepArgs{}.settings + ")")
+                      DeflectionSweepArgs{}.settings + "; perlin: F,S,B,X, default " +
+                      PerlinSweepArgs{}.settings + ")")
       ->capture_default_str();
   cmd->add_option("--requests", args->requests,
                   "trilinear, footprint-setup: random requests for the error statistics "
@@ -209,7 +216,8 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
   cmd->add_option(
          "--scene", fp->scene,
          "footprint: the scene (default scenes/grazing.json); deflection: the fragments of its "
-         "materials with a deflection chain (default a synthetic bump-mapped sphere)")
+         "materials with a deflection chain (default a synthetic bump-mapped sphere); perlin: "
+         "its procedural materials (default scenes/procedural.json)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--k", fp->k,
                   "footprint: the reference's sub-pixels per side (default 8, 4 with --quick; 1: "
@@ -232,6 +240,18 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       a.synth = args->synth;
       a.markdown = args->markdown;
       sweep_footprint_setup(a);
+    } else if (args->block == "perlin") {
+      for (const char* o : {"--k", "--quick"}) {
+        if (cmd->count(o) > 0) throw CLI::ValidationError(o, "not for `sweep perlin`");
+      }
+      PerlinSweepArgs a;
+      if (cmd->count("--settings") > 0) a.settings = args->settings;
+      if (cmd->count("--requests") > 0) a.points = args->requests;
+      a.scene = fp->scene;
+      a.synth = args->synth;
+      a.out_dir = args->out_dir;
+      a.markdown = args->markdown;
+      sweep_perlin(a);
     } else if (args->block == "deflection") {
       for (const char* o : {"--k", "--quick", "--requests"}) {
         if (cmd->count(o) > 0) throw CLI::ValidationError(o, "not for `sweep deflection`");
