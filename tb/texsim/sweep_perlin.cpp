@@ -135,12 +135,18 @@ void sweep_perlin(const PerlinSweepArgs& args) {
       }
     }
     row.push_back(fmt::format("{:.0f}", golden_s / args.points * 1e9));
-    const SynthFigures f = args.synth
-                               ? synthesize("tmu_noise", {{"FracBits", c.frac_bits},
-                                                          {"FadeIndexBits", c.fade_index_bits},
-                                                          {"FadeBits", c.fade_bits},
-                                                          {"LerpExtraBits", c.lerp_extra_bits}})
-                               : SynthFigures{};
+    // Yosys applies the parameters one at a time and the module checks S <= F at each step:
+    // lower S before F, raise F before S.
+    std::vector<std::pair<std::string, int>> params = {{"FadeBits", c.fade_bits},
+                                                       {"LerpExtraBits", c.lerp_extra_bits}};
+    const std::pair<std::string, int> f_param{"FracBits", c.frac_bits},
+        s_param{"FadeIndexBits", c.fade_index_bits};
+    if (c.fade_index_bits <= perlin::NoiseConfig{}.fade_index_bits) {
+      params.insert(params.begin(), {s_param, f_param});
+    } else {
+      params.insert(params.begin(), {f_param, s_param});
+    }
+    const SynthFigures f = args.synth ? synthesize("tmu_noise", params) : SynthFigures{};
     row.push_back(f.cells);
     row.push_back(f.depth);
     table.add(row);
