@@ -50,11 +50,8 @@ struct Runner {
   std::vector<std::vector<size_t>>& outputs_of;
 
   std::vector<tb::Txn> run(UnitRun unit, std::vector<size_t> fragments_of_outputs) {
-    run_unit(unit, in.level, {});
-    std::vector<tb::Txn> outputs = unit.result.outputs;
-    units.push_back(std::move(unit));
-    outputs_of.push_back(std::move(fragments_of_outputs));
-    return outputs;
+    return run_and_keep(std::move(unit), in.level, std::move(fragments_of_outputs), units,
+                        outputs_of);
   }
 
   // A map read by a trilinear unit at (u, v, lambda) per item; returns RGBA8888 per item.

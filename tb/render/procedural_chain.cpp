@@ -31,12 +31,9 @@ std::vector<uint32_t> run_procedural(const ChainInput& in, std::vector<UnitRun>&
     const auto& s = in.records[i].solid;
     unit.items.push_back(tb::material_sample_item(s[0], s[1], s[2]));
   }
-  run_unit(unit, in.level, {});
   std::vector<uint32_t> rgba;
-  for (const tb::Txn& t : unit.result.outputs)
+  for (const tb::Txn& t : run_and_keep(std::move(unit), in.level, in.frags, units, outputs_of))
     rgba.push_back((static_cast<uint32_t>(t.f[0]) << 8) | 0xFF);
-  units.push_back(std::move(unit));
-  outputs_of.push_back(in.frags);
   if (mat.sampler.combine != texram::Combine::kShade) return rgba;
 
   UnitRun shade;
@@ -47,12 +44,9 @@ std::vector<uint32_t> run_procedural(const ChainInput& in, std::vector<UnitRun>&
     shade.items.push_back(
         tb::specular_combine_item(kOpaqueBlack, rgba[k], in.records[in.frags[k]].shade));
   }
-  run_unit(shade, in.level, {});
   std::vector<uint32_t> out;
-  for (const tb::Txn& t : shade.result.outputs)
+  for (const tb::Txn& t : run_and_keep(std::move(shade), in.level, in.frags, units, outputs_of))
     out.push_back(static_cast<uint32_t>(t.f[tb::kSpcColour]));
-  units.push_back(std::move(shade));
-  outputs_of.push_back(in.frags);
   return out;
 }
 

@@ -51,4 +51,15 @@ void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options) {
   c.cycles += unit.result.cycles;
 }
 
+std::vector<tb::Txn> run_and_keep(UnitRun unit, Level level,
+                                  std::vector<size_t> fragments_of_outputs,
+                                  std::vector<UnitRun>& units,
+                                  std::vector<std::vector<size_t>>& outputs_of) {
+  run_unit(unit, level, {});
+  std::vector<tb::Txn> outputs = unit.result.outputs;
+  units.push_back(std::move(unit));
+  outputs_of.push_back(std::move(fragments_of_outputs));
+  return outputs;
+}
+
 }  // namespace tmu::render

@@ -55,4 +55,11 @@ void attach(UnitRun& run, std::shared_ptr<Block> block) {
 // Runs a unit's engine at `level` (not ideal) over its items and records it in the census.
 void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options);
 
+// A unit of a chain: runs it (run_unit), keeps it in `units` with the fragment index of each of
+// its outputs in `outputs_of`, and returns its outputs for the next unit.
+std::vector<tb::Txn> run_and_keep(UnitRun unit, Level level,
+                                  std::vector<size_t> fragments_of_outputs,
+                                  std::vector<UnitRun>& units,
+                                  std::vector<std::vector<size_t>>& outputs_of);
+
 }  // namespace tmu::render
