@@ -4,17 +4,17 @@
 //
 // Matching the two:
 // - OIIO reads a MIP-mapped OpenEXR file whose levels are our pyramid's (read back through the bank
-//   layout, which this test thereby also covers).
+//   layout, which this test thereby also covers): write_oiio_mip_texture (texram/oiio_texture.hpp).
 // - OIIO chooses levels from derivatives and blends linearly in filter width: with the filter
 //   width f (in texels) at the first level m where f <= 1, it blends levels m - 1 and m by
 //   2f - 1. Our lambda = (m - 1) + t blends them by t, so we pass the derivative that gives
-//   f = (1 + t) / 2 at level m. Square textures only: OIIO uses min(width, height) per level.
+//   f = (1 + t) / 2 at level m (oiio_trilinear_derivative). Square textures only: OIIO uses
+//   min(width, height) per level.
 // - Wrap modes: oiio_wrap() (texram/oiio_texture.hpp), WrapBlack = border with a (0, 0, 0, 0)
 //   border colour. Same texel-centre convention, (i + 0.5) / w.
 //
 // Tolerance: both compute the same weighted sums, OIIO in single precision on texels / 255
 // stored as float; float rounding of the data and weights stays far below 0.01 of a level.
-#include <OpenImageIO/imageio.h>
 #include <OpenImageIO/texture.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -30,45 +30,6 @@
 namespace tmu::texram {
 namespace {
 
-// Writes every level of the texture as one MIP level of a tiled float OpenEXR file (Debian's
-// OpenImageIO writes no MIP-mapped TIFF; float keeps every 8-bit value exact).
-void write_mip_exr(const std::string& path, const TexramTexture& t, const SamplerConfig& c) {
-  auto out = OIIO::ImageOutput::create(path);
-  ASSERT_TRUE(out);
-  for (int l = 0; l < t.geometry.levels(); ++l) {
-    const int w = static_cast<int>(t.geometry.texel_width(l)),
-              h = static_cast<int>(t.geometry.texel_height(l));
-    OIIO::ImageSpec spec(w, h, 4, OIIO::TypeDesc::FLOAT);
-    spec.tile_width = spec.tile_height = 64;
-    spec.attribute("openexr:levelmode", 1);  // MIPMAP_LEVELS
-    spec.attribute("textureformat", "Plain Texture");
-    std::vector<float> pixels;
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const uint32_t texel =
-            texel_rgba(t, c, l, static_cast<uint32_t>(x), static_cast<uint32_t>(y));
-        for (int ch = 0; ch < 4; ++ch)
-          pixels.push_back(static_cast<float>(channel(texel, ch)) / 255.0f);
-      }
-    }
-    ASSERT_TRUE(out->open(path, spec,
-                          l == 0 ? OIIO::ImageOutput::Create : OIIO::ImageOutput::AppendMIPLevel))
-        << out->geterror();
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data())) << out->geterror();
-  }
-  ASSERT_TRUE(out->close());
-}
-
-// The derivative (normalized texture units per pixel) that makes OIIO's trilinear lookup use
-// our lambda's levels and blend, for a square texture of side w with `top` as its last level.
-float derivative_for(double lambda, int top, int w) {
-  if (lambda <= 0) return 0.5f / static_cast<float>(w);  // finer than level 0: magnification
-  if (lambda >= top) return 4.0f;                        // coarser than the last level
-  const double m = std::ceil(lambda);                    // second level
-  const double t = lambda - (m - 1);                     // blend, (0, 1]
-  return static_cast<float>((1 + t) * std::ldexp(1.0, static_cast<int>(m) - 1) / w);
-}
-
 TEST(TexramIdealOiioTest, IdealTrilinearMatchesOpenImageIO) {
   const auto dir =
       std::filesystem::temp_directory_path() / ("tmu_oiio_" + std::to_string(::getpid()));
@@ -83,7 +44,7 @@ TEST(TexramIdealOiioTest, IdealTrilinearMatchesOpenImageIO) {
     c.filter = Filter::kTrilinear;
     c.border_rgba = 0;
     const std::string path = (dir / ("tex" + std::to_string(side) + ".exr")).string();
-    write_mip_exr(path, tex, c);
+    write_oiio_mip_texture(path, tex, c);
     const int top = tex.geometry.levels() - 1;
     for (Border b : {Border::kWrap, Border::kClamp, Border::kMirror, Border::kBorder}) {
       c.border_u = c.border_v = b;
@@ -98,7 +59,7 @@ TEST(TexramIdealOiioTest, IdealTrilinearMatchesOpenImageIO) {
         const double v = std::uniform_real_distribution<double>(-1.5 * side, 2.5 * side)(rng);
         const double lambda = std::uniform_real_distribution<double>(-1.0, top + 1.0)(rng);
         const auto ideal = ideal_sample(tex, c, u, v, lambda);
-        const float d = derivative_for(lambda, top, side);
+        const float d = oiio_trilinear_derivative(lambda, top, side);
         float got[4] = {0, 0, 0, 0};
         ASSERT_TRUE(ts->texture(OIIO::ustring(path), opt, static_cast<float>(u / side),
                                 static_cast<float>(v / side), d, 0.0f, 0.0f, d, 4, got))
