@@ -4,7 +4,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
-mapfile -t files < <(git ls-files 'golden/*' 'host/*' 'hls/*' 'tb/*' 'tests/*' 'bench/*' | grep -E '\.(cpp|hpp|inl)$')
+mapfile -t files < <(git ls-files 'golden/*' 'host/*' 'hls/*' 'tb/*' 'tests/*' 'bench/*' 'fuzz/*' | grep -E '\.(cpp|hpp|inl)$')
 if [[ "${1:-}" == "--fix" ]]; then
   clang-format -i "${files[@]}"
   exit 0

@@ -6,7 +6,9 @@ set -euo pipefail
 PACKAGES=(
   cmake ninja-build g++ ccache pkg-config git       # build
   clang-format                                       # style check
+  clang libclang-rt-14-dev                           # libFuzzer targets (scripts/fuzz.sh)
   verilator libsystemc-dev                           # rtl and hls models
+  iverilog                                           # the rtl under a second simulator
   libglm-dev libopenimageio-dev openimageio-tools    # ideal models, image I/O, idiff
   libcli11-dev nlohmann-json3-dev libfmt-dev         # texsim
   libgtest-dev libbenchmark-dev                      # tests, benchmarks

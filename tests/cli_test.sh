@@ -30,10 +30,20 @@ expect() {
 }
 
 for cmd in "" "cosim" "ccc" "ccc encode" "ccc decode" "ccc roundtrip" "formats" "pattern" "sample" "mipgen" \
-  "sweep" "render" "merge"; do
+  "sweep" "render" "merge" "levels"; do
   # shellcheck disable=SC2086
   expect "help: texsim $cmd" 0 "Usage" -- "$texsim" $cmd --help
 done
+
+# The model-level table: every level of the noise unit, each equal to golden, as text, Markdown
+# and CSV; an unknown block is a clear error.
+expect "levels: every model level of the noise unit equals golden" 0 \
+  "perlin +rtl-fst +300 .* yes +FST of every signal" -- "$texsim" levels perlin --count 300 --markdown lv.md
+[[ -s lv.md && $(head -1 lv.csv) == '"block","level",'* ]] && pass "levels: Markdown and CSV" ||
+  fail "levels: lv.md / lv.csv missing or malformed"
+expect "levels: a wrong output is caught" 1 "perlin +rtl +300 .* NO: output 7 field p" -- \
+  "$texsim" levels perlin --count 300 --inject-fault 7
+expect "levels: an unknown block" 2 "nosuch" -- "$texsim" levels nosuch
 
 "$texsim" pattern default img.png --width 37 --height 21 >/dev/null
 expect "encode an odd-sized image" 0 "PSNR .* dB.*bits per texel" -- "$texsim" ccc encode img.png img.ccc
@@ -92,6 +102,9 @@ expect "request with too few values names the line" 2 "short.csv: line 1" -- \
 printf 'u,v,lambda\n1,2,40\n' >far.csv
 expect "lambda beyond the port names the column" 2 "far.csv: line 2: lambda" -- \
   "$texsim" sample --texture tex.png --requests far.csv --out x.csv
+printf 'u,v,lambda,u\n1,2,3,4\n' >dup.csv
+expect "a request header naming a column twice" 2 "dup.csv: line 1: header: duplicate column 'u'" -- \
+  "$texsim" sample --texture tex.png --requests dup.csv --out x.csv
 expect "a texture that is not a power of two" 2 "img.png: size" -- \
   "$texsim" sample --texture img.png --requests req.csv --out x.csv
 [[ ! -e x.csv ]] && pass "no result file after failed samples" || fail "x.csv written by a failed sample"

@@ -496,6 +496,48 @@ TEST(HostSceneTest, SyntaxErrorNamesLineAndColumn) {
   }
 }
 
+// Found with the fuzz targets' checks (docs/robustness.md): a number beyond a double names its
+// field; a vector too long or too short to normalize (the sum of squares overflows or
+// underflows) is an error, not a NaN view matrix or light.
+TEST(HostSceneTest, HugeNumbersNameTheField) {
+  for (const auto& [text, field] :
+       {std::pair<std::string, std::string>{R"({"camera": {"position": [0, 1e999, 0]}})",
+                                            "camera.position[1]"},
+        {R"({"camera": {"fov": -1e999}})", "camera.fov"}}) {
+    try {
+      parse_scene(text, "big.json", ".");
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), "big.json");
+      EXPECT_EQ(e.field(), field) << e.what();
+      EXPECT_NE(e.reason().find("number overflow"), std::string::npos) << e.what();
+    }
+  }
+  Json j = base_scene();
+  j["camera"]["position"] = {-1e308, 0, 0};
+  j["camera"]["target"] = {1e308, 0, 0};
+  expect_error(j, "camera.target", "too near to or too far");
+  j = base_scene();
+  j["camera"]["position"] = {0, 0, 1e200};
+  expect_error(j, "camera.target", "too near to or too far");
+  j = base_scene();
+  j["camera"]["up"] = {0, 1e300, 0};
+  expect_error(j, "camera.up", "too short or too long");
+  j = base_scene();
+  j["lights"] =
+      Json::parse(R"([{"type": "directional", "direction": [1e300, 0, 0], "colour": [1, 1, 1]}])");
+  expect_error(j, "lights[0].direction", "too short or too long");
+  j = base_scene();
+  j["camera"]["up"] = {0, 1e-160, 0};
+  expect_error(j, "camera.up", "too short or too long");
+  j = base_scene();
+  j["camera"]["position"] = {0, 0, 1e-170};
+  expect_error(j, "camera.target", "too near to or too far");
+  j = base_scene();
+  j["camera"]["up"] = {0, 1e-100, 0};  // short, but it normalizes
+  EXPECT_EQ(parse(j).camera.up, glm::dvec3(0, 1e-100, 0));
+}
+
 // --- files -----------------------------------------------------------------------------------
 
 TEST(HostSceneTest, MissingFilesAreResolvedAgainstTheSceneFolder) {

@@ -9,6 +9,18 @@ namespace {
 // Largest side the PixelCoord format (12 bits) addresses.
 constexpr int kMaxResolution = 4096;
 
+// Whether glm::normalize(v), as the renderer calls it, gives a unit vector. It divides by the
+// root of the sum of squares, which overflows for components beyond about 1e154 (zeros or
+// NaN) and loses its precision or underflows to 0 below about 1e-154 (a wrong length or NaN).
+bool normalizes(const glm::dvec3& v) {
+  const glm::dvec3 n = glm::normalize(v);
+  return std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) &&
+         std::abs(glm::length(n) - 1) < 1e-9;
+}
+
+constexpr const char* kNoDirection =
+    "is too short or too long to normalize (lengths of about 1e-150..1e150 work)";
+
 }  // namespace
 
 Camera parse_camera(const JsonNode& node) {
@@ -20,12 +32,20 @@ Camera parse_camera(const JsonNode& node) {
   const JsonNode up = node.at("up");
   c.up = up.vec3();
   const glm::dvec3 view = c.target - c.position;
-  if (glm::length(view) == 0) target.fail("equals the camera position: no view direction");
-  if (glm::length(c.up) == 0) up.fail("must not be the zero vector");
-  // lookAt needs an up direction with a component across the view direction.
+  if (view == glm::dvec3(0)) target.fail("equals the camera position: no view direction");
+  if (!normalizes(view)) {
+    target.fail(
+        "is too near to or too far from the camera position for a view direction (distances of "
+        "about 1e-150..1e150 work)");
+  }
+  if (c.up == glm::dvec3(0)) up.fail("must not be the zero vector");
+  if (!normalizes(c.up)) up.fail(kNoDirection);
+  // lookAt needs an up direction with a component across the view direction, and normalizes
+  // the cross product of the two.
   if (glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) < 1e-9) {
     up.fail("is parallel to the view direction (target - position)");
   }
+  if (!normalizes(glm::cross(glm::normalize(view), c.up))) up.fail(kNoDirection);
   const JsonNode fov = node.at("fov");
   c.fov_deg = fov.number();
   if (!(c.fov_deg > 0 && c.fov_deg < 180)) fov.fail("must be in (0, 180) degrees");
@@ -64,7 +84,8 @@ std::vector<Light> parse_lights(const JsonNode& node) {
       light.kind = Light::Kind::kDirectional;
       const JsonNode dir = l.at("direction");
       light.vector = dir.vec3();
-      if (glm::length(light.vector) == 0) dir.fail("must not be the zero vector");
+      if (light.vector == glm::dvec3(0)) dir.fail("must not be the zero vector");
+      if (!normalizes(light.vector)) dir.fail(kNoDirection);
     } else {
       l.allow_keys({"type", "colour", "position"});
       light.kind = Light::Kind::kPoint;

@@ -28,12 +28,13 @@ std::string type_name(const Json& j) {
 }
 
 // Tracks where the parser is, so that a duplicated key (which nlohmann would silently resolve)
-// is reported with its path.
-class DuplicateKeyCheck {
+// is reported with its path, and so is a number nlohmann cannot hold (1e999), whose error
+// carries no position.
+class ParsePath {
  public:
-  explicit DuplicateKeyCheck(const std::string& file) : file_(file) {}
+  explicit ParsePath(const std::string& file) : file_(file) {}
 
-  bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
+  bool operator()(Json::parse_event_t event, Json& parsed) {
     using E = Json::parse_event_t;
     switch (event) {
       case E::object_start:
@@ -51,7 +52,7 @@ class DuplicateKeyCheck {
       case E::key: {
         Frame& f = stack_.back();
         f.key = parsed.get<std::string>();
-        if (!f.keys.insert(f.key).second) throw InputError(file_, path(), "duplicate key");
+        if (!f.keys.insert(f.key).second) throw InputError(file_, path(false), "duplicate key");
         break;
       }
       case E::value:
@@ -59,6 +60,18 @@ class DuplicateKeyCheck {
         break;
     }
     return true;
+  }
+
+  // The path of the last element begun, or (`next`) of the value the parser is reading when
+  // it stops inside a value: a list's next element (an object's key is already set).
+  std::string path(bool next) const {
+    std::string p;
+    for (size_t i = 0; i < stack_.size(); ++i) {
+      const Frame& f = stack_[i];
+      const long index = f.index + (next && i + 1 == stack_.size() ? 1 : 0);
+      p = f.array ? element_path(p, static_cast<size_t>(index)) : join_path(p, f.key);
+    }
+    return p;
   }
 
  private:
@@ -72,17 +85,16 @@ class DuplicateKeyCheck {
   void begin_element() {
     if (!stack_.empty() && stack_.back().array) ++stack_.back().index;
   }
-  std::string path() const {
-    std::string p;
-    for (const Frame& f : stack_) {
-      p = f.array ? element_path(p, static_cast<size_t>(f.index)) : join_path(p, f.key);
-    }
-    return p;
-  }
 
   const std::string& file_;
   std::vector<Frame> stack_;
 };
+
+// nlohmann's message without its "[json.exception.out_of_range.406] " prefix.
+std::string without_prefix(const std::string& what) {
+  const size_t end = what.starts_with("[json.exception.") ? what.find("] ") : std::string::npos;
+  return end == std::string::npos ? what : what.substr(end + 2);
+}
 
 }  // namespace
 
@@ -95,8 +107,11 @@ std::string element_path(const std::string& path, size_t index) {
 }
 
 Json parse_json(const std::string& text, const std::string& file) {
+  ParsePath where(file);
   try {
-    return Json::parse(text, DuplicateKeyCheck(file));
+    return Json::parse(text, [&where](int /*depth*/, Json::parse_event_t event, Json& parsed) {
+      return where(event, parsed);
+    });
   } catch (const Json::parse_error& e) {
     // nlohmann's message: "[json.exception.parse_error.101] parse error at line 3, column 7:
     // syntax error while parsing ..."; keep the position as the field and the rest as reason.
@@ -105,8 +120,11 @@ Json parse_json(const std::string& text, const std::string& file) {
     const size_t colon = at == std::string::npos ? at : what.find(": ", at);
     if (colon == std::string::npos) throw InputError(file, "", what);
     throw InputError(file, what.substr(at, colon - at), what.substr(colon + 2));
+  } catch (const Json::out_of_range& e) {
+    // A number beyond a double (1e999): nlohmann gives no position, the path names the value.
+    throw InputError(file, where.path(true), without_prefix(e.what()));
   } catch (const Json::exception& e) {
-    throw InputError(file, "", e.what());
+    throw InputError(file, "", without_prefix(e.what()));
   }
 }
 

@@ -74,9 +74,7 @@ class TraceReader {
  public:
   explicit TraceReader(std::string path) : path_(std::move(path)) {}
 
-  FragmentTrace read() {
-    std::ifstream in(path_, std::ios::binary);
-    if (!in) throw InputError(path_, "", std::string("cannot open: ") + std::strerror(errno));
+  FragmentTrace read(std::istream& in) {
     std::string text;
     bool header = false;
     while (std::getline(in, text)) {
@@ -211,6 +209,14 @@ void write_trace(const std::string& path, const FragmentTrace& trace) {
   });
 }
 
-FragmentTrace read_trace(const std::string& path) { return TraceReader(path).read(); }
+FragmentTrace read_trace(std::istream& in, const std::string& name) {
+  return TraceReader(name).read(in);
+}
+
+FragmentTrace read_trace(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", std::string("cannot open: ") + std::strerror(errno));
+  return read_trace(in, path);
+}
 
 }  // namespace tmu::host

@@ -5,6 +5,7 @@
 // (shade as 0xRRGGBBAA).
 #pragma once
 
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -21,5 +22,7 @@ struct FragmentTrace {
 void write_trace(const std::string& path, const FragmentTrace& trace);  // atomic
 // Throws InputError naming the file, line and column.
 FragmentTrace read_trace(const std::string& path);
+// The same from a stream (tests, fuzzing); `name` stands for the file in messages.
+FragmentTrace read_trace(std::istream& in, const std::string& name);
 
 }  // namespace tmu::host

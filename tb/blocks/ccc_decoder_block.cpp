@@ -8,6 +8,7 @@
 #include "formats/formats.hpp"
 #include "harness/hls_runner.hpp"
 #include "hls/ccc/ccc_decoder_sc.hpp"
+#include "icarus/icarus_engine.hpp"
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -214,7 +215,11 @@ std::unique_ptr<Engine> CccDecoderBlock::engine(const std::string& level) const 
   if (level == "golden") return std::make_unique<GoldenEngine>();
   if (level == "hls") return std::make_unique<HlsEngine>();
   if (level == "rtl") return make_ccc_decoder_rtl_engine<Vtmu_ccc_decoder>("rtl");
-  throw std::invalid_argument("ccc: no engine '" + level + "' (golden, hls, rtl)");
+  if (level == "icarus") {
+    return make_icarus_engine("icarus", {"ccc_decoder_tb", "tmu_ccc_decoder"}, kInputs, kOutputs,
+                              [](const Txn& t) { return t.f[kDecOp] == kOpDecode; });
+  }
+  throw std::invalid_argument("ccc: no engine '" + level + "' (golden, hls, rtl, icarus)");
 }
 
 std::vector<std::string> CccDecoderBlock::coverage_cases() const {

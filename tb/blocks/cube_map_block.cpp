@@ -15,6 +15,7 @@
 #include "formats/formats.hpp"
 #include "harness/hls_runner.hpp"
 #include "hls/deflect/cube_address_sc.hpp"
+#include "icarus/icarus_engine.hpp"
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -336,7 +337,9 @@ std::unique_ptr<Engine> CubeMapBlock::engine(const std::string& level) const {
   if (level == "golden") return std::make_unique<GoldenEngine>();
   if (level == "hls") return std::make_unique<HlsEngine>();
   if (level == "rtl") return make_cube_map_rtl_engine<Vtmu_cube_address>("rtl");
-  throw std::invalid_argument("cube-map: no engine '" + level + "' (golden, hls, rtl)");
+  if (level == "icarus")
+    return make_icarus_engine("icarus", {"cube_address_tb", "tmu_cube_address"}, kInputs, kOutputs);
+  throw std::invalid_argument("cube-map: no engine '" + level + "' (golden, hls, rtl, icarus)");
 }
 
 namespace {

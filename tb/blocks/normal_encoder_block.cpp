@@ -16,6 +16,7 @@
 #include "formats/formats.hpp"
 #include "harness/hls_runner.hpp"
 #include "hls/deflect/normal_encoder_sc.hpp"
+#include "icarus/icarus_engine.hpp"
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -379,7 +380,17 @@ std::unique_ptr<Engine> NormalEncoderBlock::engine(const std::string& level) con
         "7/1/7; add a variant to rtl/CMakeLists.txt)",
         config().seed_bits, config().lut_exp, config().lut_mant));
   }
-  throw std::invalid_argument("normal-encoder: no engine '" + level + "' (golden, hls, rtl)");
+  if (level == "icarus") {  // any widths: the testbench passes them on as parameters
+    return make_icarus_engine("icarus",
+                              {"normal_encoder_tb",
+                               "tmu_normal_encoder",
+                               {{"SeedBits", std::to_string(config().seed_bits)},
+                                {"LutExp", std::to_string(config().lut_exp)},
+                                {"LutMant", std::to_string(config().lut_mant)}}},
+                              kInputs, kOutputs);
+  }
+  throw std::invalid_argument("normal-encoder: no engine '" + level +
+                              "' (golden, hls, rtl, icarus)");
 }
 
 namespace {

@@ -1,11 +1,14 @@
 #include "blocks/perlin_block.hpp"
 
 #include <Vtmu_fractal_pipelined.h>
+#include <Vtmu_fractal_pipelined_threads.h>
 #include <Vtmu_fractal_shared.h>
 #include <Vtmu_noise.h>
+#include <Vtmu_noise_threads.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 
@@ -13,6 +16,8 @@
 #include "harness/hls_runner.hpp"
 #include "hls/perlin/fractal_sc.hpp"
 #include "hls/perlin/noise_sc.hpp"
+#include "icarus/icarus_engine.hpp"
+#include "perlin/noise_ideal.hpp"
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -116,6 +121,43 @@ class TurbulenceGoldenEngine : public Engine {
     r.output_cycles.assign(r.outputs.size(), 0);
     return r;
   }
+};
+
+// The ideal (double precision) noise and fractal sums of the same coordinates, rounded to the
+// output formats only so that the run has outputs: `texsim levels` times it, nothing compares it.
+class NoiseIdealEngine : public Engine {
+ public:
+  explicit NoiseIdealEngine(bool fractal) : fractal_(fractal) {}
+  std::string name() const override { return "ideal"; }
+  RunResult run(const std::vector<Txn>& items, const RunOptions&) override {
+    RunResult r;
+    r.outputs.reserve(items.size());
+    const double unit = std::ldexp(1.0, fmts::kSolidCoord.frac_bits);
+    const auto start = std::chrono::steady_clock::now();
+    for (const Txn& t : items) {
+      const auto [u, v, w] = solid_coords(t);
+      Txn out;
+      if (fractal_) {
+        const auto s = perlin::ideal::fractal_sums(u / unit, v / unit, w / unit);
+        out.f[kTurbSum] = raw_of(s.fractal_sum, fmts::kFractalValue);
+        out.f[kTurbTurbulence] = raw_of(s.turbulence, fmts::kFractalValue);
+      } else {
+        out.f[kPerlinP] =
+            raw_of(perlin::ideal::noise(u / unit, v / unit, w / unit), fmts::kNoiseValue);
+      }
+      r.outputs.push_back(out);
+    }
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.output_cycles.assign(r.outputs.size(), 0);
+    return r;
+  }
+
+ private:
+  static uint64_t raw_of(double value, const fx::Format& format) {
+    return static_cast<uint64_t>(std::llround(std::ldexp(value, format.frac_bits))) &
+           mask(format.width());
+  }
+  bool fractal_;
 };
 
 // The hls modules with their signals, driven by the harness's ScDriver.
@@ -404,7 +446,12 @@ std::unique_ptr<Engine> PerlinBlock::engine(const std::string& level) const {
   if (level == "golden") return std::make_unique<PerlinGoldenEngine>();
   if (level == "hls") return std::make_unique<PerlinHlsEngine>();
   if (level == "rtl") return make_perlin_rtl_engine<Vtmu_noise>("rtl");
-  throw std::invalid_argument("perlin: no engine '" + level + "' (golden, hls, rtl)");
+  if (level == "icarus")
+    return make_icarus_engine("icarus", {"noise_tb", "tmu_noise"}, kInputs, kPerlinOutputs);
+  if (level == "ideal") return std::make_unique<NoiseIdealEngine>(false);
+  if (level == "rtl-threads") return make_perlin_rtl_engine<Vtmu_noise_threads>("rtl-threads");
+  throw std::invalid_argument("perlin: no engine '" + level +
+                              "' (golden, hls, rtl, icarus; ideal, rtl-threads)");
 }
 
 namespace {
@@ -566,7 +613,17 @@ std::unique_ptr<Engine> TurbulenceBlock::engine(const std::string& level) const 
     if (shared_) return make_turbulence_rtl_engine<Vtmu_fractal_shared>("rtl");
     return make_turbulence_rtl_engine<Vtmu_fractal_pipelined>("rtl");
   }
-  throw std::invalid_argument("turbulence: no engine '" + level + "' (golden, hls, rtl)");
+  if (level == "icarus") {
+    return make_icarus_engine(
+        "icarus", {"fractal_tb", shared_ ? "tmu_fractal_shared" : "tmu_fractal_pipelined"}, kInputs,
+        kTurbulenceOutputs);
+  }
+  if (level == "ideal") return std::make_unique<NoiseIdealEngine>(true);
+  if (level == "rtl-threads" && !shared_) {
+    return make_turbulence_rtl_engine<Vtmu_fractal_pipelined_threads>("rtl-threads");
+  }
+  throw std::invalid_argument("turbulence: no engine '" + level +
+                              "' (golden, hls, rtl, icarus; ideal; rtl-threads when pipelined)");
 }
 
 namespace {

@@ -10,6 +10,7 @@
 #include "formats/formats.hpp"
 #include "harness/hls_runner.hpp"
 #include "hls/texram/specular_combine_sc.hpp"
+#include "icarus/icarus_engine.hpp"
 #include "texram/specular_combine.hpp"
 
 namespace tmu::tb {
@@ -246,7 +247,12 @@ std::unique_ptr<Engine> SpecularCombineBlock::engine(const std::string& level) c
   if (level == "golden") return std::make_unique<GoldenEngine>();
   if (level == "hls") return std::make_unique<HlsEngine>();
   if (level == "rtl") return make_specular_combine_rtl_engine<Vtmu_specular_combine>("rtl");
-  throw std::invalid_argument("specular-combine: no engine '" + level + "' (golden, hls, rtl)");
+  if (level == "icarus") {
+    return make_icarus_engine("icarus", {"specular_combine_tb", "tmu_specular_combine"}, kInputs,
+                              kOutputs);
+  }
+  throw std::invalid_argument("specular-combine: no engine '" + level +
+                              "' (golden, hls, rtl, icarus)");
 }
 
 namespace {

@@ -1,5 +1,6 @@
 #include "blocks/trilinear_block.hpp"
 
+#include <Vtmu_trilinear_threads.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "harness/hls_runner.hpp"
 #include "hls/texram/trilinear_sc.hpp"
 #include "texram/trilinear.hpp"
+#include "texram/trilinear_ideal.hpp"
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -496,6 +498,41 @@ class HlsBench : public sc_core::sc_module, public ScAdapter {
   sig<fmts::kRgba8888.width()> out_rgba_{"out_rgba"};
 };
 
+// The ideal (double precision) sampler on the same requests, rounded to RGBA8888 only so that
+// the run has outputs: `texsim levels` times it, nothing compares it.
+class IdealEngine : public Engine {
+ public:
+  explicit IdealEngine(TrilinearEnv env) : env_(std::move(env)) {}
+  std::string name() const override { return "ideal"; }
+  RunResult run(const std::vector<Txn>& items, const RunOptions&) override {
+    RunResult r;
+    texram::TexramTexture texture = *env_.texture;
+    const double unit = std::ldexp(1.0, kFrac);
+    const auto start = std::chrono::steady_clock::now();
+    for (const Txn& t : items) {
+      if (t.f[kTriOp] == kTriOpClutWrite) {
+        texture.clut[static_cast<uint8_t>(t.f[kTriClutAddr])] =
+            static_cast<uint32_t>(t.f[kTriClutRgba]);
+        continue;
+      }
+      const texram::Request q = trilinear_request(t);
+      const auto c = texram::ideal_sample(texture, env_.config, q.u / unit, q.v / unit,
+                                          q.lambda / unit, q.shade);
+      uint64_t rgba = 0;
+      for (double channel : c) rgba = rgba << 8 | static_cast<uint64_t>(std::lround(channel));
+      Txn out;
+      out.f[0] = rgba;
+      r.outputs.push_back(out);
+    }
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.output_cycles.assign(r.outputs.size(), 0);
+    return r;
+  }
+
+ private:
+  TrilinearEnv env_;
+};
+
 class HlsEngine : public Engine {
  public:
   explicit HlsEngine(TrilinearEnv env) : env_(std::move(env)) {}
@@ -728,7 +765,17 @@ std::unique_ptr<Engine> TrilinearBlock::engine(const std::string& level) const {
         "trilinear: no rtl model was verilated at these widths (built: " + built +
         "; add them to TMU_TRILINEAR_VARIANTS in rtl/CMakeLists.txt)");
   }
-  throw std::invalid_argument("trilinear: no engine '" + level + "' (golden, hls, rtl)");
+  if (level == "ideal") return std::make_unique<IdealEngine>(env_);
+  if (level == "icarus") {  // docs/harness.md, "Icarus Verilog"
+    throw std::invalid_argument(
+        "trilinear: not accepted by Icarus 11 (it aborts on a function returning a package "
+        "typedef, tmu_pkg::channel_t mul255 in tmu_trilinear_blend.sv)");
+  }
+  if (level == "rtl-threads" && env_.config.widths == texram::Widths{}) {
+    return make_trilinear_rtl_engine<Vtmu_trilinear_threads>("rtl-threads", env_);
+  }
+  throw std::invalid_argument("trilinear: no engine '" + level +
+                              "' (golden, hls, rtl; ideal; rtl-threads at the default widths)");
 }
 
 namespace {

@@ -7,6 +7,13 @@
 
 #include <verilated.h>
 #include <verilated_fst_c.h>
+#if defined(VM_COVERAGE) && VM_COVERAGE
+#include <unistd.h>
+#include <verilated_cov.h>
+
+#include <atomic>
+#include <cstdlib>
+#endif
 
 #include <chrono>
 #include <memory>
@@ -50,6 +57,18 @@ inline void append_error(RunResult& result, const std::string& error) {
 
 inline int verilator_seed(uint64_t seed) { return static_cast<int>(1 + seed % 0x7FFFFFFEull); }
 
+#if defined(VM_COVERAGE) && VM_COVERAGE
+// Coverage build only (-DTMU_RTL_COVERAGE=ON, docs/coverage.md). The coverage files of a
+// run, $TMU_COVERAGE_DIR/<pid>_<n> without the extension: unique in the process (one counter
+// for every model type) and among processes; empty when the variable is not set.
+inline std::string coverage_file() {
+  static std::atomic<int> runs{0};
+  const char* dir = std::getenv("TMU_COVERAGE_DIR");
+  if (dir == nullptr || *dir == '\0') return {};
+  return std::string(dir) + "/" + std::to_string(::getpid()) + "_" + std::to_string(runs++);
+}
+#endif
+
 template <class Model>
 RunResult run_rtl(RtlAdapter<Model>& adapter, const std::vector<Txn>& items,
                   size_t expected_outputs, const RunOptions& options) {
@@ -70,9 +89,11 @@ RunResult run_rtl(RtlAdapter<Model>& adapter, const std::vector<Txn>& items,
   uint64_t wave_cycle = 0;  // counts reset cycles too
   auto dump = [&](uint64_t time) {
     if (!fst) return;
-    const int64_t c = static_cast<int64_t>(wave_cycle) - kResetCycles;  // driver's cycle
-    const bool in_window = c <= static_cast<int64_t>(trace->end_cycle) &&
-                           c + kResetCycles >= static_cast<int64_t>(trace->begin_cycle);
+    // The window in the driver's cycles, which are negative during reset; compared unsigned,
+    // so that end_cycle's default (UINT64_MAX, the whole run) means what it says.
+    const int64_t c = static_cast<int64_t>(wave_cycle) - kResetCycles;
+    const bool in_window =
+        (c < 0 || static_cast<uint64_t>(c) <= trace->end_cycle) && wave_cycle >= trace->begin_cycle;
     if (in_window && !fst->isOpen()) fst->open(trace->fst_path.c_str());
     if (in_window) fst->dump(time);
     if (!in_window && fst->isOpen()) fst->close();
@@ -102,6 +123,19 @@ RunResult run_rtl(RtlAdapter<Model>& adapter, const std::vector<Txn>& items,
     tick();
   }
   m->rst_ni = 1;
+#if defined(VM_COVERAGE) && VM_COVERAGE
+  // Coverage build: the initialisation and reset go to a file of their own (<file>_reset.dat),
+  // then the counters restart. scripts/coverage.sh counts their lines (constant tables, logic
+  // fed by the static configuration only settle there), not their toggles (every flop changes
+  // from its random initial value into reset).
+  // Per instance: scripts/coverage.sh judges a bit's toggles in each instance on its own.
+  const std::string coverage_path = coverage_file();
+  if (!coverage_path.empty()) {
+    ctx->coveragep()->forcePerInstance(true);
+    ctx->coveragep()->write((coverage_path + "_reset.dat").c_str());
+    ctx->coveragep()->zero();
+  }
+#endif
 
   const auto start = std::chrono::steady_clock::now();
   auto cycle = [&] {
@@ -130,6 +164,11 @@ RunResult run_rtl(RtlAdapter<Model>& adapter, const std::vector<Txn>& items,
   append_error(result, adapter.env_error());
   if (fst && fst->isOpen()) fst->close();
   m->final();
+#if defined(VM_COVERAGE) && VM_COVERAGE
+  // The counters live in this run's context: each run writes its own file (texsim runs several
+  // models in one process); scripts/coverage.sh merges them.
+  if (!coverage_path.empty()) ctx->coveragep()->write((coverage_path + ".dat").c_str());
+#endif
   return std::move(result);
 }
 

@@ -41,7 +41,8 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
   cmd->add_option("--count", args->cosim.count, "Random transactions after the directed ones")
       ->capture_default_str();
   cmd->add_option("--engines", args->engines,
-                  "Engines compared against golden (comma separated: hls, rtl)")
+                  "Engines compared against golden (comma separated: hls, rtl, icarus: the rtl "
+                  "under Icarus Verilog, where a block has it)")
       ->capture_default_str();
   cmd->add_option("--vectors", args->cosim.vectors_in,
                   "Replay a vector file (CSV) instead of directed + random")
@@ -146,7 +147,7 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
     args->cosim.engines.clear();
     std::stringstream ss(args->engines);
     for (std::string e; std::getline(ss, e, ',');) {
-      if (e != "hls" && e != "rtl")
+      if (e != "hls" && e != "rtl" && e != "icarus")
         throw CLI::ValidationError("--engines", "unknown engine '" + e + "'");
       args->cosim.engines.push_back(e);
     }

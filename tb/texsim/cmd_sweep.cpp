@@ -21,6 +21,7 @@
 #include "texram/trilinear.hpp"
 #include "texram/trilinear_ideal.hpp"
 #include "texsim/commands.hpp"
+#include "texsim/sweep_all.hpp"
 #include "texsim/sweep_deflection.hpp"
 #include "texsim/sweep_footprint.hpp"
 #include "texsim/sweep_footprint_setup.hpp"
@@ -123,6 +124,8 @@ std::vector<Widths> parse_settings(const std::string& text) {
   return out;
 }
 
+}  // namespace
+
 void sweep_trilinear(const SweepArgs& args) {
   const std::vector<Widths> settings = parse_settings(args.settings);
   const TexramTexture photo =
@@ -167,8 +170,6 @@ void sweep_trilinear(const SweepArgs& args) {
   table.print(args.markdown);
 }
 
-}  // namespace
-
 void add_sweep_command(CLI::App& app, ExitCode&) {
   auto* cmd = app.add_subcommand(
       "sweep",
@@ -189,13 +190,18 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       "perlin: the noise unit's widths F,S,B,X: noise and fractal-sum error against the ideal, "
       "PSNR of each\n"
       "procedural material of a scene, fade-table bits, speed, cells; both fractal "
-      "configurations (docs/perlin.md).");
+      "configurations (docs/perlin.md).\n"
+      "all: every sweep above, the model-level table (texsim levels) and the default scene at "
+      "every engine, with\n"
+      "a plot per block (scripts/plot_accuracy.py): writes DIR/accuracy.md and DIR/accuracy/ "
+      "(--out DIR, default docs).");
   auto args = std::make_shared<SweepArgs>();
   auto fp = std::make_shared<FootprintSweepArgs>();
   cmd->add_option("block", args->block,
-                  "trilinear | footprint | footprint-setup | deflection | perlin")
+                  "trilinear | footprint | footprint-setup | deflection | perlin | all")
       ->required()
-      ->check(CLI::IsMember({"trilinear", "footprint", "footprint-setup", "deflection", "perlin"}));
+      ->check(CLI::IsMember(
+          {"trilinear", "footprint", "footprint-setup", "deflection", "perlin", "all"}));
   cmd->add_option("--settings", args->settings,
                   "trilinear: width settings S,W,L separated by ';' (footprint-setup: D,T,F; "
                   "default " +
@@ -217,7 +223,9 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
          "--scene", fp->scene,
          "footprint: the scene (default scenes/grazing.json); deflection: the fragments of its "
          "materials with a deflection chain (default a synthetic bump-mapped sphere); perlin: "
-         "its procedural materials (default scenes/procedural.json)")
+         "its procedural materials (default scenes/procedural.json); all: the scene rendered at "
+         "every "
+         "engine (default scenes/default.json)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--k", fp->k,
                   "footprint: the reference's sub-pixels per side (default 8, 4 with --quick; 1: "
@@ -225,7 +233,16 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       ->check(CLI::Range(1, 16));
   cmd->add_flag("--quick", fp->quick, "footprint: half the frame and k = 4 (for tests)");
   cmd->callback([args, fp, cmd] {
-    if (args->block == "trilinear") {
+    if (args->block == "all") {
+      for (const char* o : {"--settings", "--requests", "--k", "--quick", "--markdown"}) {
+        if (cmd->count(o) > 0) throw CLI::ValidationError(o, "not for `sweep all`");
+      }
+      SweepAllArgs a;
+      if (!args->out_dir.empty()) a.out_dir = args->out_dir;
+      a.synth = args->synth;
+      a.scene = fp->scene;
+      sweep_all(a);
+    } else if (args->block == "trilinear") {
       for (const char* o : {"--scene", "--k", "--quick"}) {
         if (cmd->count(o) > 0) throw CLI::ValidationError(o, "only for `sweep footprint`");
       }

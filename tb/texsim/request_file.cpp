@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -59,6 +60,10 @@ const std::vector<std::string> kColumns{"u",    "v",    "lambda", "shade",
 std::vector<SampleRequest> read_requests(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path, "", "cannot open request file");
+  return read_requests(in, path);
+}
+
+std::vector<SampleRequest> read_requests(std::istream& in, const std::string& path) {
   std::vector<std::string> columns;
   std::vector<SampleRequest> requests;
   std::string line;
@@ -72,11 +77,17 @@ std::vector<SampleRequest> read_requests(const std::string& path) {
     if (columns.empty()) {
       double probe;
       if (!parse_real(cells[0], probe)) {  // a header
-        for (const std::string& c : cells) {
+        for (size_t i = 0; i < cells.size(); ++i) {
+          const std::string& c = cells[i];
           if (std::find(kColumns.begin(), kColumns.end(), c) == kColumns.end()) {
             throw InputError(
                 path, where("header"),
                 "unknown column '" + c + "' (u, v, lambda, shade, dudx, dvdx, dudy, dvdy)");
+          }
+          // A second 'u' would silently replace the first one's value.
+          if (std::find(cells.begin(), cells.begin() + static_cast<long>(i), c) !=
+              cells.begin() + static_cast<long>(i)) {
+            throw InputError(path, where("header"), "duplicate column '" + c + "'");
           }
         }
         for (const char* needed : {"u", "v", "lambda"}) {

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <istream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,8 @@ struct SampleRequest {
 
 // Throws InputError naming the file, the line and the column.
 std::vector<SampleRequest> read_requests(const std::string& path);
+// The same from a stream (tests, fuzzing); `name` stands for the file in messages.
+std::vector<SampleRequest> read_requests(std::istream& in, const std::string& name);
 
 // Writes the results atomically (RGBA8888 values).
 void write_results(const std::string& path, const std::vector<uint32_t>& rgba);

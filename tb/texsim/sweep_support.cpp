@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 #include "common/atomic_file.hpp"
@@ -44,7 +45,21 @@ void SweepTable::print(const std::string& markdown_path) const {
   md += "\n";
   for (const auto& r : rows_) md += "| " + fmt::format("{}", fmt::join(r, " | ")) + " |\n";
   write_file_atomically(markdown_path, md);
-  fmt::print("wrote {}\n", markdown_path);
+  std::string csv;
+  auto csv_line = [&csv](const std::vector<std::string>& cells) {
+    for (size_t i = 0; i < cells.size(); ++i) {
+      std::string quoted = cells[i];  // every cell quoted: settings such as 8,8,8 hold commas
+      for (size_t at = quoted.find('"'); at != std::string::npos; at = quoted.find('"', at + 2))
+        quoted.insert(at, 1, '"');
+      csv += (i ? ",\"" : "\"") + quoted + "\"";
+    }
+    csv += "\n";
+  };
+  csv_line(header_);
+  for (const auto& r : rows_) csv_line(r);
+  const std::string csv_path = std::filesystem::path(markdown_path).replace_extension(".csv");
+  write_file_atomically(csv_path, csv);
+  fmt::print("wrote {} and {}\n", markdown_path, csv_path);
 }
 
 SynthFigures synthesize(const std::string& top,

@@ -25,13 +25,17 @@ class SweepTable {
   explicit SweepTable(std::vector<std::string> header) : header_(std::move(header)) {}
   void add(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
   std::string last_row_text() const;
-  // Prints the aligned table; writes it as Markdown too when `markdown_path` is not empty.
+  // Prints the aligned table; when `markdown_path` is not empty, writes it there as Markdown
+  // and beside it as CSV (same stem, .csv) for scripts/plot_accuracy.py.
   void print(const std::string& markdown_path) const;
 
  private:
   std::vector<std::string> header_;
   std::vector<std::vector<std::string>> rows_;
 };
+
+// `texsim sweep trilinear` (cmd_sweep.cpp).
+void sweep_trilinear(const SweepArgs& args);
 
 struct SynthFigures {
   std::string cells = "-", logic = "-", depth = "-";
