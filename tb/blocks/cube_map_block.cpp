@@ -277,6 +277,11 @@ std::vector<Txn> CubeMapBlock::directed_items() const {
       items.push_back(cube_item(r[0], r[1], r[2], l));
     }
   }
+  // The port's sizes beyond the TEXRAM's faces, L = 11 .. 15 (the unit computes golden's
+  // formula for every 4-bit L): the upper bits of u and v (docs/coverage.md).
+  for (int l = fmts::kMaxMipLog2 + 1; l < 16; ++l) {
+    for (const auto& [x, y, z] : hard_vectors()) items.push_back(cube_item(x, y, z, l));
+  }
   // Every seed-table index of the dividers' denominator ma (the major |component| in
   // [2^14, 2^15): index (ma >> 7) & 127 at S = 7, here at the mantissa's bucket middle), the
   // faces and the face coordinates varied by the index, on the largest face.

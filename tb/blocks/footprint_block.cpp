@@ -341,6 +341,13 @@ std::vector<Txn> FootprintBlock::directed_items() const {
   frag(cu, cv, kDerivMin, kDerivMax, kDerivMax, kDerivMin);  // nearly antiparallel
   frag(cu, cv, kDerivMin, 0, 0, kOne);
   frag(kCoordMax, kCoordMin, kDerivMax, kDerivMax, kDerivMin, kDerivMax);
+  // Every component at the largest magnitude 2^23 - 1 (all ones, 2^D - 1 after the shift,
+  // where a power of two leaves 2^(D-1)): the squared lengths and the area, 2 (2^D - 1)^2,
+  // reach the top bit of the logarithms' 2D + 1-bit operands (docs/coverage.md).
+  frag(cu, cv, kDerivMax, kDerivMax, -kDerivMax, kDerivMax);
+  // The largest ratio at D = 16 (no shift): (a, a - 1) and (a - 1, a - 2), a = 2^16 - 1,
+  // nearly parallel, cross product -1 LSB^2: heights rho = log2(s_max / area) ~ 33.
+  frag(cu, cv, 0xFFFF, 0xFFFE, 0xFFFE, 0xFFFD);
 
   // Probes crossing the texture's edges: centres a quarter texel inside u = 0, u = size, v = 0,
   // v = size and at the corners, 8-texel footprints across the edge: probes on both sides

@@ -609,6 +609,21 @@ std::vector<Txn> MaterialBlock::directed_items() const {
   sample_probes();
   reg(MaterialReg::kGl, 1);
   sample_probes();
+  // g_l = 0 (-g_l's sign clear): every level 0; then back.
+  reg(MaterialReg::kGl, 0);
+  sample_probes();
+  reg(MaterialReg::kGl, 0xFFFF);
+  sample(probes[0][0], probes[0][1], probes[0][2]);
+
+  // Brick at every period, pw 1 .. 20 then 1 again, ph the reverse, one sample each: every
+  // bit of 2^pw and 2^ph rises and falls (docs/coverage.md).
+  regs(brick);
+  for (int64_t i = 0; i <= 20; ++i) {
+    const int64_t p = i % 20 + 1;  // 1 .. 20, then 1 again
+    reg(MaterialReg::kPw, p);
+    reg(MaterialReg::kPh, 21 - p);
+    sample(p * 12345, (21 - p) * 54321, p);
+  }
 
   // Wood at the largest gains: the rings' wide product at the SolidCoord extremes.
   MaterialRegs wood;
