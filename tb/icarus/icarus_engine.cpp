@@ -17,6 +17,8 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "common/fnv1a.hpp"
+
 extern char** environ;
 
 // Set by tb/icarus/icarus.cmake; empty when configure did not find the tool.
@@ -61,14 +63,6 @@ std::string log_tail(const fs::path& path, size_t max_lines = 20) {
   for (size_t i = lines.size() > max_lines ? lines.size() - max_lines : 0; i < lines.size(); ++i)
     out += "\n    " + lines[i];
   return out;
-}
-
-uint64_t fnv1a(uint64_t h, std::string_view s) {
-  for (const char c : s) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 0x100000001b3ull;
-  }
-  return (h ^ 0xFFu) * 0x100000001b3ull;  // an end marker: "ab" + "c" differs from "a" + "bc"
 }
 
 // Runs argv (no shell) with stdout and stderr to `log`; returns the exit status, or -1 if the
@@ -183,7 +177,7 @@ std::string icarus_compile(const IcarusModel& model, double* compile_seconds) {
   files.emplace_back("tb/stream_tb.svh", read_text(tb / "stream_tb.svh"));
   files.emplace_back("tb/" + model.testbench + ".sv", read_text(tb / (model.testbench + ".sv")));
 
-  uint64_t h = 0xcbf29ce484222325ull;
+  uint64_t h = kFnv1aBasis;
   h = fnv1a(h, kCompileFlavour);
   h = fnv1a(h, iverilog);
   h = fnv1a(h, model.testbench);

@@ -6,9 +6,12 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "common/atomic_file.hpp"
+#include "common/fnv1a.hpp"
 
 namespace tmu::texsim {
 namespace {
@@ -62,12 +65,55 @@ void SweepTable::print(const std::string& markdown_path) const {
   fmt::print("wrote {} and {}\n", markdown_path, csv_path);
 }
 
+namespace {
+
+// The content key of a synthesis: the top, its parameters, the Yosys version and script, and
+// every RTL source (rtl/ is small; hashing it all is simpler than following the manifest).
+uint64_t synth_key(const std::string& top, const std::vector<std::pair<std::string, int>>& params,
+                   const std::string& command) {
+  namespace fs = std::filesystem;
+  const fs::path root = TMU_SOURCE_DIR;
+  uint64_t h = fnv1a(fnv1a(kFnv1aBasis, top), command);
+  for (const auto& [name, value] : params) h = fnv1a(fnv1a(h, name), std::to_string(value));
+  std::vector<fs::path> files = {root / "scripts/synth.sh"};
+  for (const auto& e : fs::recursive_directory_iterator(root / "rtl"))
+    if (e.is_regular_file()) files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    std::ifstream in(f, std::ios::binary);
+    h = fnv1a(fnv1a(h, f.lexically_relative(root).string()),
+              std::string(std::istreambuf_iterator<char>(in), {}));
+  }
+  FILE* version = ::popen("yosys -V 2>&1", "r");
+  std::array<char, 256> buf{};
+  while (version != nullptr && std::fgets(buf.data(), buf.size(), version))
+    h = fnv1a(h, buf.data());
+  if (version != nullptr) ::pclose(version);
+  return h;
+}
+
+SynthCounts counts;
+
+}  // namespace
+
+SynthCounts synth_counts() { return counts; }
+
 SynthFigures synthesize(const std::string& top,
                         const std::vector<std::pair<std::string, int>>& params) {
   std::string cmd = std::string(TMU_SOURCE_DIR) + "/scripts/synth.sh";
   for (const auto& [name, value] : params) cmd += fmt::format(" -G {}={}", name, value);
   cmd += " " + top + " 2>&1";
   SynthFigures f{"?", "?", "?"};
+  // A synthesis takes seconds to minutes and `texsim sweep all` runs dozens, most of them
+  // unchanged since the last run: figures are kept per content key in the build directory.
+  const std::filesystem::path cached = std::filesystem::path(TMU_SYNTH_CACHE_DIR) /
+                                       fmt::format("{}-{:016x}", top, synth_key(top, params, cmd));
+  if (std::ifstream in(cached); in >> f.cells >> f.logic >> f.depth) {
+    ++counts.cached;
+    return f;
+  }
+  ++counts.run;
+  f = {"?", "?", "?"};
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (!pipe) return f;
   std::array<char, 512> buf{};
@@ -77,7 +123,10 @@ SynthFigures synthesize(const std::string& top,
     if (line >> name >> cells >> flops >> logic >> mem >> depth && name == top)
       f = {cells, logic, depth};
   }
-  ::pclose(pipe);
+  if (::pclose(pipe) == 0 && f.cells != "?") {
+    std::filesystem::create_directories(cached.parent_path());
+    write_file_atomically(cached.string(), fmt::format("{} {} {}\n", f.cells, f.logic, f.depth));
+  }
   return f;
 }
 

@@ -42,8 +42,16 @@ struct SynthFigures {
 };
 
 // Runs scripts/synth.sh on `top` with the parameters overridden; "?" figures when it fails.
+// Results are cached in the build directory (synth_cache/), keyed by the top, the parameters,
+// the Yosys version and the content of rtl/ and scripts/synth.sh.
 SynthFigures synthesize(const std::string& top,
                         const std::vector<std::pair<std::string, int>>& params);
+
+// How many synthesize() calls of this process ran Yosys and how many the cache answered.
+struct SynthCounts {
+  int run = 0, cached = 0;
+};
+SynthCounts synth_counts();
 
 struct RtlSpeed {
   double samples_per_second = 0;  // 0: no Verilated model at this setting
