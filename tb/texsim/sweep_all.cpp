@@ -135,6 +135,12 @@ std::string provenance(const SweepAllArgs& args, const RunContext& run) {
       std::thread::hardware_concurrency(), run.load_start, run.load_end, synth.run, synth.cached);
 }
 
+// `path` relative to the source tree when it is inside it: the document is checked in.
+std::string display_path(const std::string& path) {
+  const fs::path rel = fs::path(path).lexically_relative(TMU_SOURCE_DIR);
+  return rel.empty() || *rel.begin() == ".." ? path : rel.string();
+}
+
 std::string document(const SweepAllArgs& args, const fs::path& data, const std::string& scene,
                      const RunContext& run) {
   const std::string rel = data.filename().string();
@@ -150,7 +156,7 @@ std::string document(const SweepAllArgs& args, const fs::path& data, const std::
       "same RTL under Icarus Verilog.\n\n{}\n"
       "## The default scene at every engine\n\n`{}`, whole render (front end, textures, units), "
       "`texsim render --engine E`:\n\n{}\n",
-      provenance(args, run), rel, read_text(data / "levels.md"), scene,
+      provenance(args, run), rel, read_text(data / "levels.md"), display_path(scene),
       read_text(data / "scene_levels.md"));
   for (const Section& s : kSections) {
     doc +=
