@@ -62,7 +62,9 @@ const Section kSections[] = {
      "deflection word; 9,4,5,10 (512x256) is the default. Error: angle of the deflected normal "
      "(N) and of the reflection vector (R) against the ideal, PSNR of the shaded views. Cost: "
      "table bits, the deflection cache's hit rate and cycles per bumped pixel, golden time per "
-     "pixel, and the cells of the encoder, the deflection unit and the coordinate generator.",
+     "pixel, and the cells of the encoder, the deflection unit and the coordinate generator (n/a: "
+     "a setting beyond the RTL's port formats, a grid above 512x256 or W above 10, is golden "
+     "only).",
      "deflection.md"},
     {"Procedural noise (002 §4.1)", "perlin",
      "Settings F,S,B,X: fade-table index bits, fade-value bits, lerp weight bits, extra lerp "
