@@ -67,14 +67,13 @@ void SweepTable::print(const std::string& markdown_path) const {
 
 namespace {
 
-// The content key of a synthesis: the top, its parameters, the Yosys version and script, and
-// every RTL source (rtl/ is small; hashing it all is simpler than following the manifest).
-uint64_t synth_key(const std::string& top, const std::vector<std::pair<std::string, int>>& params,
-                   const std::string& command) {
+// The content key of a synthesis: its command (top and parameters), the Yosys version, and
+// the script and every RTL source (rtl/ is small; hashing it all is simpler than following
+// the manifest).
+uint64_t synth_key(const std::string& command) {
   namespace fs = std::filesystem;
   const fs::path root = TMU_SOURCE_DIR;
-  uint64_t h = fnv1a(fnv1a(kFnv1aBasis, top), command);
-  for (const auto& [name, value] : params) h = fnv1a(fnv1a(h, name), std::to_string(value));
+  uint64_t h = fnv1a(kFnv1aBasis, command);
   std::vector<fs::path> files = {root / "scripts/synth.sh"};
   for (const auto& e : fs::recursive_directory_iterator(root / "rtl"))
     if (e.is_regular_file()) files.push_back(e.path());
@@ -103,17 +102,16 @@ SynthFigures synthesize(const std::string& top,
   std::string cmd = std::string(TMU_SOURCE_DIR) + "/scripts/synth.sh";
   for (const auto& [name, value] : params) cmd += fmt::format(" -G {}={}", name, value);
   cmd += " " + top + " 2>&1";
-  SynthFigures f{"?", "?", "?"};
   // A synthesis takes seconds to minutes and `texsim sweep all` runs dozens, most of them
   // unchanged since the last run: figures are kept per content key in the build directory.
-  const std::filesystem::path cached = std::filesystem::path(TMU_SYNTH_CACHE_DIR) /
-                                       fmt::format("{}-{:016x}", top, synth_key(top, params, cmd));
-  if (std::ifstream in(cached); in >> f.cells >> f.logic >> f.depth) {
+  const std::filesystem::path cached =
+      std::filesystem::path(TMU_SYNTH_CACHE_DIR) / fmt::format("{}-{:016x}", top, synth_key(cmd));
+  if (SynthFigures hit; std::ifstream(cached) >> hit.cells >> hit.logic >> hit.depth) {
     ++counts.cached;
-    return f;
+    return hit;
   }
   ++counts.run;
-  f = {"?", "?", "?"};
+  SynthFigures f{"?", "?", "?"};
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (!pipe) return f;
   std::array<char, 512> buf{};
