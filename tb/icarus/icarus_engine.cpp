@@ -18,6 +18,7 @@
 #include <string_view>
 
 #include "common/fnv1a.hpp"
+#include "common/read_file.hpp"
 
 extern char** environ;
 
@@ -38,14 +39,6 @@ namespace fs = std::filesystem;
 
 // Bump when the rewrite or the compile flags change, so cached models are rebuilt.
 constexpr std::string_view kCompileFlavour = "icarus-compat-1 -g2012 -DSYNTHESIS";
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("icarus: cannot read " + path.string());
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 void write_text(const fs::path& path, const std::string& text) {
   fs::create_directories(path.parent_path());
@@ -95,7 +88,7 @@ fs::path cache_dir() {
 
 // The sources of `top` from rtl/manifest.txt, relative to rtl/, tmu_pkg.sv first.
 std::vector<std::string> manifest_sources(const fs::path& rtl, const std::string& top) {
-  std::istringstream manifest(read_text(rtl / "manifest.txt"));
+  std::istringstream manifest(read_file(rtl / "manifest.txt"));
   for (std::string line; std::getline(manifest, line);) {
     std::istringstream fields(line);
     std::string name;
@@ -158,7 +151,7 @@ std::string icarus_compile(const IcarusModel& model, double* compile_seconds) {
   std::vector<std::pair<std::string, std::string>> files;  // path in the model dir, text
   bool mutated = false;
   for (const std::string& rel : manifest_sources(rtl, model.top)) {
-    std::string text = read_text(rtl / rel);
+    std::string text = read_file(rtl / rel);
     if (model.mutation && model.mutation->file == rel) {
       const size_t at = text.find(model.mutation->from);
       if (at == std::string::npos) {
@@ -174,8 +167,8 @@ std::string icarus_compile(const IcarusModel& model, double* compile_seconds) {
     throw std::runtime_error("icarus: mutation names " + model.mutation->file +
                              ", not a source of " + model.top);
   }
-  files.emplace_back("tb/stream_tb.svh", read_text(tb / "stream_tb.svh"));
-  files.emplace_back("tb/" + model.testbench + ".sv", read_text(tb / (model.testbench + ".sv")));
+  files.emplace_back("tb/stream_tb.svh", read_file(tb / "stream_tb.svh"));
+  files.emplace_back("tb/" + model.testbench + ".sv", read_file(tb / (model.testbench + ".sv")));
 
   uint64_t h = kFnv1aBasis;
   h = fnv1a(h, kCompileFlavour);
@@ -295,7 +288,7 @@ class IcarusEngine : public Engine {
 
     bool ok = rc == 0;
     if (!ok) append(r, fmt::format("vvp failed (exit {}):{}", rc, log_tail(log)));
-    const std::string messages = read_text(log);
+    const std::string messages = read_file(log);
     if (ok && messages.find("ERROR") != std::string::npos) {
       append(r, "vvp reported an error:" + log_tail(log));
       ok = false;

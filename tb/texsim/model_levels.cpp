@@ -67,9 +67,10 @@ BlockLevels measure_levels(const std::string& block_name, size_t count, uint64_t
   tb::RunResult golden;
   for (const std::string& level : kModelLevels) {
     LevelRun row{level, 0, 0, "-", ""};
+    const std::string engine_level = level == "rtl-fst" ? "rtl" : level;  // traced below
     std::unique_ptr<tb::Engine> engine;
     try {
-      engine = block->engine(level == "rtl-fst" ? "rtl" : level);
+      engine = block->engine(engine_level);
     } catch (const std::invalid_argument& e) {
       row.note = e.what();
       result.runs.push_back(row);
@@ -95,7 +96,7 @@ BlockLevels measure_levels(const std::string& block_name, size_t count, uint64_t
     int repeats = 1;
     for (double total = run.seconds; run.error.empty() && total < kMinSeconds && repeats < 1000;
          ++repeats) {
-      total += block->engine(level == "rtl-fst" ? "rtl" : level)->run(items, options).seconds;
+      total += block->engine(engine_level)->run(items, options).seconds;
       row.seconds = total / (repeats + 1);
     }
     if (!run.error.empty()) {

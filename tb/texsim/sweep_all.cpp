@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "common/atomic_file.hpp"
+#include "common/read_file.hpp"
 #include "texsim/model_levels.hpp"
 #include "texsim/sweep_deflection.hpp"
 #include "texsim/sweep_footprint.hpp"
@@ -23,14 +24,6 @@ namespace tmu::texsim {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("sweep all: cannot read " + path.string());
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // One block's part of the document: what its settings are, how to read its columns, its
 // table (the Markdown its sweep wrote) and its plot (scripts/plot_accuracy.py).
@@ -158,15 +151,15 @@ std::string document(const SweepAllArgs& args, const fs::path& data, const std::
       "same RTL under Icarus Verilog.\n\n{}\n"
       "## The default scene at every engine\n\n`{}`, whole render (front end, textures, units), "
       "`texsim render --engine E`:\n\n{}\n",
-      provenance(args, run), rel, read_text(data / "levels.md"), display_path(scene),
-      read_text(data / "scene_levels.md"));
+      provenance(args, run), rel, read_file(data / "levels.md"), display_path(scene),
+      read_file(data / "scene_levels.md"));
   for (const Section& s : kSections) {
     doc +=
         fmt::format("## {}\n\n{} Reading: [{}]({}).\n\n{}\n![{}]({}/{}.png)\n\n", s.title, s.about,
-                    s.doc, s.doc, read_text(data / (s.stem + ".md")), s.title, rel, s.stem);
+                    s.doc, s.doc, read_file(data / (s.stem + ".md")), s.title, rel, s.stem);
   }
   doc += "### Procedural noise: the fractal unit's configurations\n\n" +
-         read_text(data / "perlin_configs.md") +
+         read_file(data / "perlin_configs.md") +
          "\n## CCC decoder and low-cost unit (000 §3-4)\n\nNo width settings: the decoder is "
          "exact (a CLUT look-up) and the low-cost unit's weights are the 8 bits §4 gives them. "
          "Their figures: [ccc.md](ccc.md).\n";

@@ -7,11 +7,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 
 #include "common/atomic_file.hpp"
 #include "common/fnv1a.hpp"
+#include "common/read_file.hpp"
 
 namespace tmu::texsim {
 namespace {
@@ -78,11 +78,8 @@ uint64_t synth_key(const std::string& command) {
   for (const auto& e : fs::recursive_directory_iterator(root / "rtl"))
     if (e.is_regular_file()) files.push_back(e.path());
   std::sort(files.begin(), files.end());
-  for (const auto& f : files) {
-    std::ifstream in(f, std::ios::binary);
-    h = fnv1a(fnv1a(h, f.lexically_relative(root).string()),
-              std::string(std::istreambuf_iterator<char>(in), {}));
-  }
+  for (const auto& f : files)
+    h = fnv1a(fnv1a(h, f.lexically_relative(root).string()), read_file(f));
   FILE* version = ::popen("yosys -V 2>&1", "r");
   std::array<char, 256> buf{};
   while (version != nullptr && std::fgets(buf.data(), buf.size(), version))
