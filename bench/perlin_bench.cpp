@@ -9,7 +9,7 @@
 
 #include "bench/improved_noise.hpp"
 #include "bench/ratio_reporter.hpp"
-#include "blocks/perlin_block.hpp"
+#include "blocks/registry.hpp"
 #include "perlin/noise.hpp"
 
 namespace tmu::bench {
@@ -89,7 +89,7 @@ BENCHMARK(BM_TurbulenceImprovedDouble)->Unit(benchmark::kMillisecond)->UseRealTi
 void turbulence_block(benchmark::State& state, const std::string& level, bool shared) {
   tb::BlockOptions o;
   o.fractal_shared = shared;
-  const auto block = tb::make_block("turbulence", o);
+  const auto block = tb::make_block("fractal", o);
   std::mt19937_64 rng(5);
   const std::vector<tb::Txn> items = block->random_items(rng, static_cast<size_t>(1) << 16);
   const auto engine = block->engine(level);

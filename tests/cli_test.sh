@@ -38,10 +38,10 @@ done
 # The model-level table: every level of the noise unit, each equal to golden, as text, Markdown
 # and CSV; an unknown block is a clear error.
 expect "levels: every model level of the noise unit equals golden" 0 \
-  "perlin +rtl-fst +300 .* yes +FST of every signal" -- "$texsim" levels perlin --count 300 --markdown lv.md
+  "noise +rtl-fst +300 .* yes +FST of every signal" -- "$texsim" levels noise --count 300 --markdown lv.md
 [[ -s lv.md && $(head -1 lv.csv) == '"block","level",'* ]] && pass "levels: Markdown and CSV" ||
   fail "levels: lv.md / lv.csv missing or malformed"
-expect "levels: a wrong output is caught" 1 "perlin +rtl +300 .* NO: output 7 field p" -- \
+expect "levels: a wrong output is caught" 1 "noise +rtl +300 .* NO: output 7 field p" -- \
   "$texsim" levels perlin --count 300 --inject-fault 7
 expect "levels: an unknown block" 2 "nosuch" -- "$texsim" levels nosuch
 
@@ -71,7 +71,7 @@ echo keep >keep.png
 "$texsim" ccc decode bad_magic.ccc keep.png >/dev/null 2>&1
 [[ $(cat keep.png) == keep ]] && pass "existing output untouched by a failed run" || fail "keep.png clobbered"
 expect "unwritable output directory" 2 "no_such_dir/x.ccc" -- "$texsim" ccc encode img.png no_such_dir/x.ccc
-expect "unknown block lists the blocks" 2 "unknown block 'nope' \(blocks: ccc" -- "$texsim" cosim nope
+expect "unknown block lists the blocks" 2 "unknown block 'nope' \(blocks: " -- "$texsim" cosim nope
 expect "bad engine" 2 "engine" -- "$texsim" ccc decode img.ccc x.png --engine fast
 expect "out-of-range stall probability" 2 "in-idle" -- "$texsim" cosim ccc --in-idle 2
 

@@ -77,7 +77,7 @@ TEST(HandshakeDriverTest, StallsNeitherDropNorDuplicate) {
   for (size_t i = 0; i < items.size(); ++i) items[i].f[0] = i;
   RunOptions opt;
   opt.stalls = {42, 0.5, 0.5};
-  HandshakeDriver d(items, items.size(), opt);
+  HandshakeDriver d(items, ItemPlan::without_config(items.size(), items.size()), opt);
   bool full = false;
   Txn reg;
   while (!d.done()) {
@@ -99,7 +99,7 @@ TEST(HandshakeDriverTest, StallsNeitherDropNorDuplicate) {
 
 TEST(HandshakeDriverTest, DuplicateOutputThrows) {
   std::vector<Txn> items(1);
-  HandshakeDriver d(items, 1, RunOptions{});
+  HandshakeDriver d(items, ItemPlan::without_config(1, 1), RunOptions{});
   const Txn out;
   d.begin_cycle();
   d.end_cycle(true, &out);
@@ -111,7 +111,7 @@ TEST(HandshakeDriverTest, DeadlockThrows) {
   std::vector<Txn> items(1);
   RunOptions opt;
   opt.max_idle_cycles = 10;
-  HandshakeDriver d(items, 1, opt);
+  HandshakeDriver d(items, ItemPlan::without_config(1, 1), opt);
   EXPECT_THROW(
       {
         for (int i = 0; i < 20; ++i) {
@@ -120,6 +120,55 @@ TEST(HandshakeDriverTest, DeadlockThrows) {
         }
       },
       std::runtime_error);
+}
+
+// A configuration item waits until every output of the items before it is out and the block
+// has been quiet for kQuietCycles cycles, is applied in one cycle, and is never presented.
+TEST(HandshakeDriverTest, ConfigurationWaitsForTheBlockToBeQuiet) {
+  std::vector<Txn> items(3);
+  ItemPlan plan;
+  plan.outputs = {1, 0, 1};
+  plan.config = {false, true, false};
+  plan.total = 2;
+  HandshakeDriver d(items, plan, RunOptions{});
+  // The first item is taken; its output comes 5 cycles later.
+  ASSERT_EQ(d.begin_cycle(), &items[0]);
+  EXPECT_FALSE(d.configuring());
+  d.end_cycle(true, nullptr);
+  int cycle = 1;
+  for (; cycle < 6; ++cycle) {
+    EXPECT_EQ(d.begin_cycle(), nullptr) << cycle;  // the output of item 0 is not out yet
+    const Txn out;
+    d.end_cycle(false, cycle == 5 ? &out : nullptr);
+  }
+  for (int quiet = 0; quiet < kQuietCycles; ++quiet, ++cycle) {
+    EXPECT_EQ(d.begin_cycle(), nullptr) << cycle;
+    d.end_cycle(false, nullptr);
+  }
+  ASSERT_EQ(d.begin_cycle(), &items[1]);
+  EXPECT_TRUE(d.configuring());
+  d.end_cycle(false, nullptr);
+  ASSERT_EQ(d.begin_cycle(), &items[2]);
+  EXPECT_FALSE(d.configuring());
+}
+
+// Something in flight (a request outstanding) holds the configuration back.
+TEST(HandshakeDriverTest, ConfigurationWaitsWhileTheBlockIsBusy) {
+  std::vector<Txn> items(1);
+  ItemPlan plan;
+  plan.outputs = {0};
+  plan.config = {true};
+  HandshakeDriver d(items, plan, RunOptions{});
+  for (int i = 0; i < 50; ++i) {
+    EXPECT_EQ(d.begin_cycle(/*quiet=*/false), nullptr);
+    d.end_cycle(false, nullptr);
+  }
+  for (int i = 0; i < kQuietCycles; ++i) {
+    EXPECT_EQ(d.begin_cycle(true), nullptr);
+    d.end_cycle(false, nullptr);
+  }
+  EXPECT_EQ(d.begin_cycle(true), &items[0]);
+  EXPECT_TRUE(d.configuring());
 }
 
 // --- vector files -----------------------------------------------------------------------

@@ -10,7 +10,9 @@
 #include <cstdint>
 #include <systemc>
 
+#include "blocks/fractal/fractal_ports.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/sc_ports.hpp"
 #include "hls/common/small_fifo.hpp"
 #include "perlin/noise.hpp"
 
@@ -18,24 +20,7 @@ namespace tmu::hls {
 
 class FractalSc : public sc_core::sc_module {
  public:
-  static constexpr int kCoordW = tmu::formats::kSolidCoord.width();
-  static constexpr int kSumW = tmu::formats::kFractalValue.width();
-  using coord_t = sc_dt::sc_int<kCoordW>;
-  using sum_t = sc_dt::sc_uint<kSumW>;  // raw SQ2.14 bits
-
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  sc_core::sc_in<bool> in_valid_i{"in_valid_i"};
-  sc_core::sc_out<bool> in_ready_o{"in_ready_o"};
-  sc_core::sc_in<coord_t> in_u_i{"in_u_i"};
-  sc_core::sc_in<coord_t> in_v_i{"in_v_i"};
-  sc_core::sc_in<coord_t> in_w_i{"in_w_i"};
-
-  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
-  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
-  sc_core::sc_out<sum_t> out_sum_o{"out_sum_o"};
-  sc_core::sc_out<sum_t> out_turbulence_o{"out_turbulence_o"};
+  TMU_SC_PORTS(fractal)
 
   // Clocks per sample of the shared configuration: one per octave.
   static constexpr int kSharedClocks = perlin::kOctaves;
@@ -55,7 +40,8 @@ class FractalSc : public sc_core::sc_module {
     out_sum_o.write(0);
     out_turbulence_o.write(0);
     wait();
-    constexpr uint32_t kMask = (1u << kSumW) - 1;
+    constexpr uint32_t kMask = (1u << formats::kFractalValue.width()) - 1;
+    const fx::Format c = formats::kSolidCoord;
     while (true) {
       in_ready_o.write(busy == 0 && out.size() <= 1);
       out_valid_o.write(!out.empty());
@@ -66,8 +52,9 @@ class FractalSc : public sc_core::sc_module {
       // Everything below sees the values from before this edge.
       if (out_valid_o.read() && out_ready_i.read()) out.pop();
       if (in_ready_o.read() && in_valid_i.read()) {
-        out.push(perlin::fractal_sums(perlin::NoiseConfig{}, in_u_i.read().to_int64(),
-                                      in_v_i.read().to_int64(), in_w_i.read().to_int64()));
+        out.push(perlin::fractal_sums(perlin::NoiseConfig{}, signed_value(in_u_i.read(), c),
+                                      signed_value(in_v_i.read(), c),
+                                      signed_value(in_w_i.read(), c)));
         if (shared_) busy = kSharedClocks - 1;
       } else if (busy > 0) {
         --busy;

@@ -9,7 +9,9 @@
 #include <cstdint>
 #include <systemc>
 
+#include "blocks/noise/noise_ports.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/sc_ports.hpp"
 #include "hls/common/small_fifo.hpp"
 #include "perlin/noise.hpp"
 
@@ -17,23 +19,7 @@ namespace tmu::hls {
 
 class NoiseSc : public sc_core::sc_module {
  public:
-  static constexpr int kCoordW = tmu::formats::kSolidCoord.width();
-  static constexpr int kNoiseW = tmu::formats::kNoiseValue.width();
-  using coord_t = sc_dt::sc_int<kCoordW>;
-  using noise_t = sc_dt::sc_uint<kNoiseW>;  // raw SQ0.11 bits
-
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  sc_core::sc_in<bool> in_valid_i{"in_valid_i"};
-  sc_core::sc_out<bool> in_ready_o{"in_ready_o"};
-  sc_core::sc_in<coord_t> in_u_i{"in_u_i"};
-  sc_core::sc_in<coord_t> in_v_i{"in_v_i"};
-  sc_core::sc_in<coord_t> in_w_i{"in_w_i"};
-
-  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
-  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
-  sc_core::sc_out<noise_t> out_p_o{"out_p_o"};
+  TMU_SC_PORTS(noise)
 
   SC_HAS_PROCESS(NoiseSc);
   explicit NoiseSc(sc_core::sc_module_name name) : sc_core::sc_module(name) {
@@ -58,9 +44,11 @@ class NoiseSc : public sc_core::sc_module {
       // Everything below sees the values from before this edge.
       if (out_valid_o.read() && out_ready_i.read()) out.pop();
       if (in_ready_o.read() && in_valid_i.read()) {
-        const int32_t p = perlin::noise(perlin::NoiseConfig{}, in_u_i.read().to_int64(),
-                                        in_v_i.read().to_int64(), in_w_i.read().to_int64());
-        out.push(static_cast<uint32_t>(p) & ((1u << kNoiseW) - 1));
+        const fx::Format c = formats::kSolidCoord;
+        const int32_t p =
+            perlin::noise(perlin::NoiseConfig{}, signed_value(in_u_i.read(), c),
+                          signed_value(in_v_i.read(), c), signed_value(in_w_i.read(), c));
+        out.push(static_cast<uint32_t>(p) & ((1u << formats::kNoiseValue.width()) - 1));
       }
     }
   }

@@ -9,7 +9,7 @@
 #include <functional>
 #include <stdexcept>
 
-#include "blocks/perlin_block.hpp"
+#include "blocks/noise/solid_stimulus.hpp"
 #include "formats/formats.hpp"
 #include "harness/hls_runner.hpp"
 #include "hls/perlin/material_sc.hpp"
@@ -665,7 +665,7 @@ std::vector<Txn> MaterialBlock::directed_items() const {
 std::vector<Txn> MaterialBlock::random_items(std::mt19937_64& rng, size_t count) const {
   std::vector<Txn> items;
   items.reserve(count);
-  const std::vector<Txn> coords = noise_random_items(rng, count);
+  const std::vector<Txn> coords = solid::random_items(rng, count);
   size_t next_coord = 0;
   size_t next_regs = kRegsPeriod / 2, next_tables = kTablesPeriod / 2;
   while (items.size() < count) {
@@ -700,7 +700,7 @@ std::vector<Txn> MaterialBlock::random_items(std::mt19937_64& rng, size_t count)
                                           static_cast<uint32_t>(r >> 9) & 0xFF,
                                           static_cast<uint32_t>(r >> 17)));
     } else {
-      std::array<int32_t, 3> c = solid_coords(coords[next_coord++ % coords.size()]);
+      std::array<int32_t, 3> c = solid::coords(coords[next_coord++ % coords.size()]);
       switch ((r >> 8) % 8) {
         case 0:  // fire's range of v: -2 .. 18 units
           c[1] = static_cast<int32_t>((r >> 16) % (20 * kOne)) - 2 * kOne;

@@ -58,11 +58,34 @@ struct BlockOptions {
 
 struct BlockInfo {
   std::string name;
-  std::string summary;
+  std::string summary;               // one line, with its source section
+  std::vector<std::string> aliases;  // names it had before
 };
 
 std::vector<BlockInfo> block_list();
-// Throws std::invalid_argument naming the known blocks when `name` is not one of them.
+// The block of a name or alias (a hyphen stands for an underscore: cube-address); throws
+// std::invalid_argument naming the known blocks when `name` is not one of them.
 std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& options);
+// The name of the block `name` or alias names, or "" when none does.
+std::string block_name(const std::string& name);
+
+// Every variant of every block (rtl/blocks.cmake): the block, its variant key ("" the
+// default) and the `texsim cosim` options that select it.
+struct BlockVariant {
+  std::string block, key, options;
+};
+std::vector<BlockVariant> block_variants();
 
 }  // namespace tmu::tb
+
+// In a block's .cpp: registers it under its name (rtl/blocks.cmake lists the blocks) with its
+// one-line summary and its old names.
+#define TMU_REGISTER_BLOCK(block, Class, summary, ...)                        \
+  namespace tmu::tb {                                                         \
+  BlockInfo block_info_##block() { return {#block, summary, {__VA_ARGS__}}; } \
+  std::unique_ptr<Block> make_block_##block(const BlockOptions& o) {          \
+    return std::make_unique<Class>(o);                                        \
+  }                                                                           \
+  }
+
+namespace tmu::tb {}  // namespace tmu::tb

@@ -1,6 +1,8 @@
 #include "blocks/trilinear_block.hpp"
 
+#if TMU_RTL_THREADS
 #include <Vtmu_trilinear_threads.h>
+#endif
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -771,9 +773,11 @@ std::unique_ptr<Engine> TrilinearBlock::engine(const std::string& level) const {
         "trilinear: not accepted by Icarus 11 (it aborts on a function returning a package "
         "typedef, tmu_pkg::channel_t mul255 in tmu_trilinear_blend.sv)");
   }
+#if TMU_RTL_THREADS
   if (level == "rtl-threads" && env_.config.widths == texram::Widths{}) {
     return make_trilinear_rtl_engine<Vtmu_trilinear_threads>("rtl-threads", env_);
   }
+#endif
   throw std::invalid_argument("trilinear: no engine '" + level +
                               "' (golden, hls, rtl; ideal; rtl-threads at the default widths)");
 }

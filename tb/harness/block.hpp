@@ -50,6 +50,8 @@ class Block {
                      Coverage& coverage) const = 0;
 
   virtual std::vector<Port> ports() const = 0;
+  // The schema of each memory request channel whose requests the scoreboard compares.
+  virtual std::vector<const Schema*> request_schemas() const { return {}; }
   // Options of `texsim cosim` that recreate this block's environment (e.g. its texture).
   virtual std::string repro_options() const { return ""; }
 };

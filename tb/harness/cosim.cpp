@@ -25,6 +25,7 @@ std::string repro_command(const Block& block, const CosimOptions& o) {
   if (!o.vectors_in.empty()) cmd += " --vectors " + o.vectors_in;
   if (!o.directed) cmd += " --no-directed";
   cmd += fmt::format(" --in-idle {} --out-stall {}", o.in_idle, o.out_stall);
+  if (o.inject_fault >= 0) cmd += fmt::format(" --inject-fault {}", o.inject_fault);
   const std::string extra = block.repro_options();
   if (!extra.empty()) cmd += " " + extra;
   return cmd;
@@ -92,7 +93,7 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
     if (o.inject_fault >= 0 && static_cast<size_t>(o.inject_fault) < scored.outputs.size()) {
       scored.outputs[static_cast<size_t>(o.inject_fault)].f[0] ^= 1;  // a deliberate wrong bit
     }
-    const Comparison c = compare(block.outputs(), golden, scored);
+    const Comparison c = compare(block.outputs(), golden, scored, block.request_schemas());
     // Cycles per transaction: the throughput (a pipelined block under no back-pressure nears 1).
     const double per_txn = static_cast<double>(run.cycles) /
                            static_cast<double>(std::max<size_t>(1, run.outputs.size()));
@@ -108,6 +109,11 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
                std::max(golden.outputs.size(), run.outputs.size()));
     if (!c.error.empty()) fmt::print(log, "  {} run failed: {}\n", level, c.error);
     for (const std::string& d : c.counter_diffs) fmt::print(log, "  counter {}\n", d);
+    for (const Comparison::RequestMismatch& r : c.requests) {
+      const Schema& schema = *block.request_schemas()[r.channel];
+      fmt::print(log, "  memory requests of channel {}: {} differ; first at request {}\n{}",
+                 r.channel, r.differing, r.first.output_index, mismatch_table(schema, r.first));
+    }
     uint64_t fail_cycle = run.cycles;
     if (c.first) {
       const Mismatch& m = *c.first;
@@ -133,16 +139,18 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
   }
 
   // X check: random initial values must not reach the outputs or the timing.
-  if (o.x_check && res.runs.count("rtl") && res.runs["rtl"].error.empty()) {
+  if (o.x_check && res.runs.count("rtl")) {
     RunOptions second = run_opt;
     second.x_seed = kXSeeds[1];
     const RunResult again = make("rtl")->run(items, second);
     const RunResult& first = res.runs["rtl"];
     const bool same = again.outputs == first.outputs &&
                       again.output_cycles == first.output_cycles &&
-                      again.counters == first.counters && again.error.empty();
+                      again.counters == first.counters && again.requests == first.requests &&
+                      again.error == first.error;
     fmt::print(log, "  x-check  rtl with random initial values, seeds {} and {}: {}\n", kXSeeds[0],
                kXSeeds[1], same ? "identical" : "DIFFERENT (an uninitialised value leaks)");
+    res.x_check = same ? XCheck::kIdentical : XCheck::kDifferent;
     if (!same) {
       res.pass = false;
       if (res.failing_engine.empty()) res.failing_engine = "rtl x-check";

@@ -32,8 +32,12 @@ struct CosimOptions {
   int64_t inject_fault = -1;  // flip bit 0 of this output of every engine (teeth check)
 };
 
+// What the X check saw: the rtl run again with other random initial values.
+enum class XCheck { kNotRun, kIdentical, kDifferent };
+
 struct CosimResult {
   bool pass = false;
+  XCheck x_check = XCheck::kNotRun;
   size_t items = 0;
   size_t transactions = 0;  // outputs compared per engine
   std::map<std::string, RunResult> runs;

@@ -56,8 +56,11 @@ struct RunResult {
                                         // (a golden model whose items make several outputs)
   uint64_t cycles = 0;                  // clock cycles of the run (0 for untimed golden)
   Counters counters;                    // the block's statistics registers at the end
-  double seconds = 0.0;                 // wall time of the model alone
-  std::string error;                    // non-empty when the run could not complete
+  // Every request the block made of its environment, per memory request channel (in the
+  // order of BlockPorts::request_channels()), in the order they were made.
+  std::vector<std::vector<Txn>> requests;
+  double seconds = 0.0;  // wall time of the model alone
+  std::string error;     // non-empty when the run could not complete
 };
 
 class Engine {

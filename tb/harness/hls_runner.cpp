@@ -59,6 +59,11 @@ std::string encode(const RunResult& r) {
     put_str(out, name);
     put_u64(out, value);
   }
+  put_u64(out, r.requests.size());
+  for (const std::vector<Txn>& channel : r.requests) {
+    put_u64(out, channel.size());
+    for (const Txn& t : channel) put(out, t.f.data(), sizeof t.f);
+  }
   put(out, &r.seconds, sizeof r.seconds);
   put_str(out, r.error);
   return out;
@@ -79,6 +84,11 @@ RunResult decode(const std::string& in) {
   for (uint64_t i = 0; i < nc; ++i) {
     std::string name = rd.str();
     r.counters.emplace_back(std::move(name), rd.u64());
+  }
+  r.requests.resize(rd.u64());
+  for (std::vector<Txn>& channel : r.requests) {
+    channel.resize(rd.u64());
+    for (Txn& t : channel) rd.get(t.f.data(), sizeof t.f);
   }
   rd.get(&r.seconds, sizeof r.seconds);
   r.error = rd.str();

@@ -168,7 +168,8 @@ std::string icarus_compile(const IcarusModel& model, double* compile_seconds) {
                              ", not a source of " + model.top);
   }
   files.emplace_back("tb/stream_tb.svh", read_file(tb / "stream_tb.svh"));
-  files.emplace_back("tb/" + model.testbench + ".sv", read_file(tb / (model.testbench + ".sv")));
+  files.emplace_back("tb/" + model.testbench + ".sv",
+                     model.text.empty() ? read_file(tb / (model.testbench + ".sv")) : model.text);
 
   uint64_t h = kFnv1aBasis;
   h = fnv1a(h, kCompileFlavour);
@@ -263,8 +264,10 @@ class IcarusEngine : public Engine {
     for (const Txn& t : items) {
       if (!produces_output_ || produces_output_(t)) ++expected;
       const Txn m = inputs_.masked(t);
-      for (size_t f = 0; f < inputs_.size(); ++f)
-        fmt::format_to(std::back_inserter(text), "{}{:x}", f == 0 ? "" : " ", m.f[f]);
+      for (size_t f = 0; f < inputs_.size(); ++f) {
+        const uint64_t v = inputs_.carries(f, m) ? m.f[size_t(inputs_.field(f).slot)] : 0;
+        fmt::format_to(std::back_inserter(text), "{}{:x}", f == 0 ? "" : " ", v);
+      }
       text += '\n';
     }
     write_text(in, text);

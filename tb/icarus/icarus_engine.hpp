@@ -38,9 +38,10 @@ struct IcarusModel {
   IcarusModel(std::string testbench_, std::string top_, Params params_ = {})
       : testbench(std::move(testbench_)), top(std::move(top_)), params(std::move(params_)) {}
 
-  std::string testbench;  // tb/icarus/<testbench>.sv defines module <testbench>
+  std::string testbench;  // the testbench module: tb/icarus/<testbench>.sv, or `text`
   std::string top;        // the DUT's module: its sources are its line of rtl/manifest.txt
   Params params;          // testbench parameters (iverilog -P)
+  std::string text;       // the testbench's text when it is generated (tb/icarus/testbench.hpp)
   std::optional<IcarusMutation> mutation;
 };
 

@@ -28,10 +28,15 @@ void add_levels_command(CLI::App& app, ExitCode& exit_code) {
     int64_t inject_fault = -1;
   };
   auto args = std::make_shared<Args>();
-  std::vector<std::string> known;
-  for (const auto& b : tb::block_list()) known.push_back(b.name);
   cmd->add_option("blocks", args->blocks, "Blocks (default: those with every level built)")
-      ->check(CLI::IsMember(known))
+      ->check(CLI::Validator(
+          [](const std::string& name) {
+            if (!tb::block_name(name).empty()) return std::string();
+            std::string known;
+            for (const auto& b : tb::block_list()) known += (known.empty() ? "" : ", ") + b.name;
+            return "unknown block '" + name + "' (blocks: " + known + ")";
+          },
+          "BLOCK"))
       ->capture_default_str();
   cmd->add_option("--count", args->count, "Random items per block")
       ->check(CLI::Range(size_t{1}, size_t{100'000'000}))
@@ -46,7 +51,8 @@ void add_levels_command(CLI::App& app, ExitCode& exit_code) {
   cmd->add_option("--markdown", args->markdown, "Also write the blocks' table as Markdown here");
   cmd->callback([args, &exit_code] {
     std::vector<BlockLevels> results;
-    for (const std::string& block : args->blocks) {
+    for (const std::string& name : args->blocks) {
+      const std::string block = tb::block_name(name);
       fmt::print("{}:\n", block);
       results.push_back(
           measure_levels(block, args->count, args->seed, std::cout, args->inject_fault));

@@ -32,7 +32,7 @@ struct BlockLevels {
 };
 
 // The blocks `texsim levels` measures by default: those with every level built.
-inline const std::vector<std::string> kLevelBlocks{"perlin", "turbulence", "trilinear"};
+inline const std::vector<std::string> kLevelBlocks{"noise", "fractal", "trilinear"};
 
 // Runs `count` random items (seeded) of `block` through every level, without stalls.
 // inject_fault >= 0 flips bit 0 of that output of every level but golden before the

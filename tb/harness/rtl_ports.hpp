@@ -1,0 +1,107 @@
+// The Verilated face of a block's port description (harness/ports.hpp): TMU_DESCRIBE_RTL(block)
+// turns the rows of TMU_PORTS_<block> into an accessor per row for any Verilated model with
+// those ports (the block's top, its parameter variants and its mutants), and PortsRtlAdapter
+// drives and samples a model through them. Nothing here names a port: a wrong or missing
+// port in the description is a compile error at the first model it is used with.
+#pragma once
+
+#include <verilated.h>
+
+#include <memory>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "harness/port_logic.hpp"
+#include "harness/rtl_runner.hpp"
+
+namespace tmu::tb {
+
+// Packs n elements of w bits (element e at bits [e w, (e + 1) w)) into a port, and back.
+template <class T>
+requires std::is_integral_v<T>
+void rtl_put(T& port, const uint64_t* v, int n, int w) {
+  const uint64_t mask = w >= 64 ? ~uint64_t{0} : (uint64_t{1} << w) - 1;
+  uint64_t bits = 0;
+  for (int e = 0; e < n; ++e) bits |= (v[e] & mask) << (e * w);
+  port = static_cast<T>(bits);
+}
+template <class T>
+requires std::is_integral_v<T>
+void rtl_get(const T& port, uint64_t* v, int n, int w) {
+  const uint64_t mask = w >= 64 ? ~uint64_t{0} : (uint64_t{1} << w) - 1;
+  for (int e = 0; e < n; ++e) v[e] = (static_cast<uint64_t>(port) >> (e * w)) & mask;
+}
+template <std::size_t N>
+void rtl_put(VlWide<N>& port, const uint64_t* v, int n, int w) {
+  for (std::size_t i = 0; i < N; ++i) port[i] = 0;
+  for (int e = 0; e < n; ++e) {
+    for (int b = 0; b < w; ++b) {
+      const int bit = e * w + b;
+      if ((v[e] >> b) & 1u) port[static_cast<size_t>(bit / 32)] |= EData{1} << (bit % 32);
+    }
+  }
+}
+template <std::size_t N>
+void rtl_get(const VlWide<N>& port, uint64_t* v, int n, int w) {
+  for (int e = 0; e < n; ++e) {
+    v[e] = 0;
+    for (int b = 0; b < w; ++b) {
+      const int bit = e * w + b;
+      v[e] |= uint64_t{(port[static_cast<size_t>(bit / 32)] >> (bit % 32)) & 1u} << b;
+    }
+  }
+}
+
+// A Verilated model driven through its block's port description.
+template <class M>
+class PortsRtlAdapter : public RtlAdapter<M> {
+ public:
+  PortsRtlAdapter(const BlockPorts& ports, const std::vector<PortRow<M>>& rows,
+                  std::unique_ptr<Environment> env)
+      : logic_(ports, rows, std::move(env)) {}
+
+  void init(M& m) override { logic_.init(m); }
+  void drive(M& m, const Txn* item) override { logic_.drive(m, item); }
+  bool accepts(const M& m, const Txn& item) const override { return logic_.accepts(m, item); }
+  void set_out_ready(M& m, bool ready) override { logic_.set_out_ready(m, ready); }
+  bool out_valid(const M& m) const override { return logic_.out_valid(m); }
+  Txn out(const M& m) const override { return logic_.out(m); }
+  void configure(M& m, const Txn& item) override { logic_.configure(m, item); }
+  void env_drive(M& m) override { logic_.env_drive(m); }
+  void env_sample(const M& m) override { logic_.env_sample(m); }
+  bool quiet(const M&) const override { return logic_.quiet(); }
+  void finish(const M& m, RunResult& result) override { logic_.finish(m, result); }
+
+ private:
+  PortLogic<M> logic_;
+};
+
+}  // namespace tmu::tb
+
+// The accessors of TMU_PORTS_<block>'s rows, for TMU_DESCRIBE_RTL (M is the model type).
+#define TMU_RTL_SET(port, n, w) \
+  +[](M& m, const uint64_t* v) { ::tmu::tb::rtl_put(m.port, v, n, w); }
+#define TMU_RTL_GET(port, n, w) \
+  +[](const M& m, uint64_t* v) { ::tmu::tb::rtl_get(m.port, v, n, w); }
+#define TMU_RTL_C(kind, ch) TMU_RTL_C_##kind(ch)
+#define TMU_RTL_C_Sample(ch) {TMU_RTL_SET(ch##_valid_i, 1, 1), TMU_RTL_GET(ch##_ready_o, 1, 1)},
+#define TMU_RTL_C_Write(ch) TMU_RTL_C_Sample(ch)
+#define TMU_RTL_C_Stream(ch) TMU_RTL_C_Sample(ch)
+#define TMU_RTL_C_Result(ch) {TMU_RTL_SET(ch##_ready_i, 1, 1), TMU_RTL_GET(ch##_valid_o, 1, 1)},
+#define TMU_RTL_C_MemRequest(ch) TMU_RTL_C_Result(ch)
+#define TMU_RTL_C_MemRequestNoReady(ch) {nullptr, TMU_RTL_GET(ch##_valid_o, 1, 1)},
+#define TMU_RTL_C_MemResponse(ch) {TMU_RTL_SET(ch##_valid_i, 1, 1), nullptr},
+#define TMU_RTL_C_CombIn(ch) {},
+#define TMU_RTL_C_CombOut(ch) {},
+#define TMU_RTL_C_Cfg(ch) {},
+#define TMU_RTL_C_Stat(ch) {},
+#define TMU_RTL_F(kind, ch, name, fmt, n) \
+  TMU_RTL_F_##kind(ch, name, n, ::tmu::formats::k##fmt.width())
+#define TMU_RTL_F_In(ch, name, n, w) {TMU_RTL_SET(ch##_##name##_i, n, w), nullptr},
+#define TMU_RTL_F_Resp(ch, name, n, w) TMU_RTL_F_In(ch, name, n, w)
+#define TMU_RTL_F_Cfg(ch, name, n, w) TMU_RTL_F_In(ch, name, n, w)
+#define TMU_RTL_F_Out(ch, name, n, w) {nullptr, TMU_RTL_GET(ch##_##name##_o, n, w)},
+#define TMU_RTL_F_Req(ch, name, n, w) TMU_RTL_F_Out(ch, name, n, w)
+#define TMU_RTL_F_Stat(ch, name, n, w) TMU_RTL_F_Out(ch, name, n, w)
+#define TMU_RTL_F_Env(ch, name, n, w) {},
