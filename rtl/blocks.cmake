@@ -159,6 +159,9 @@ tmu_mutant(noise hash FILE perlin/tmu_noise.sv
 tmu_mutant(noise fade FILE perlin/tmu_noise.sv
   FROM "FW'((num + (64'(1) << (3 * S - 1))) >> (3 * S))" TO "FW'(num >> (3 * S))"
   WHY "the fade table truncates instead of rounding half up")
+tmu_mutant(noise unreset FILE perlin/tmu_noise.sv EXPECT x-leak
+  FROM "      valid_q <= '0;\n" TO ""
+  WHY "the stage valids keep their initial values through reset (random samples leave)")
 
 # Fractal sums of four octaves (002 §4.1.1): pipelined (four noise units) and shared (one).
 tmu_block(fractal TOP tmu_fractal_pipelined)
@@ -173,11 +176,17 @@ tmu_mutant(fractal abs FILE perlin/tmu_fractal_pipelined.sv
 tmu_mutant(fractal octave FILE perlin/tmu_fractal_pipelined.sv
   FROM "localparam int unsigned Shift = i;" TO "localparam int unsigned Shift = i + 1;"
   WHY "octave i reads the coordinates at 2^(i+1) (the octave shift off by one)")
+tmu_mutant(fractal unreset FILE perlin/tmu_fractal_pipelined.sv EXPECT x-leak
+  FROM "      s8_valid_q <= 1'b0;\n" TO ""
+  WHY "the sums' output valid keeps its initial value through reset")
 tmu_mutant(fractal abs VARIANT shared FILE perlin/tmu_fractal_shared.sv
   FROM "p[PW-1] ? {1'b0, neg}" TO "p[PW-1] ? {neg[PW-1], neg}"
   WHY "|-1.0| read as a signed PW-bit value")
 tmu_mutant(fractal early VARIANT shared FILE perlin/tmu_fractal_shared.sv
   FROM "last_issue = issue && oct_q == 2'd3;" TO "last_issue = issue && oct_q == 2'd2;"
   WHY "the controller takes the next sample with octave 2 (three octaves for the first sample, the later ones in the order 3, 0, 1, 2)")
+tmu_mutant(fractal unreset VARIANT shared FILE perlin/tmu_fractal_shared.sv EXPECT x-leak
+  FROM "      acc_oct_q   <= 2'd0;\n" TO ""
+  WHY "the accumulator's octave count starts where the flops happen to be")
 
 tmu_write_block_tables()

@@ -98,12 +98,20 @@ std::vector<Txn> read_vectors(const std::string& path, const Schema& schema) {
           path, fmt::format("line {}", line_no),
           fmt::format("{} values for {} header fields", cells.size(), column_field.size()));
     }
+    // The op first (a block whose channels share the slots): it says which columns count;
+    // the others hold "-".
     Txn t;
-    for (size_t c = 0; c < cells.size(); ++c) {
-      const Field& f = schema.fields()[static_cast<size_t>(column_field[c])];
-      std::string why;
-      if (!parse_value(cells[c], f.format, t.f[static_cast<size_t>(column_field[c])], why)) {
-        throw InputError(path, fmt::format("line {}: {}", line_no, f.name), why);
+    for (int pass = 0; pass < 2; ++pass) {
+      for (size_t c = 0; c < cells.size(); ++c) {
+        const auto fi = static_cast<size_t>(column_field[c]);
+        const Field& f = schema.field(fi);
+        const bool is_op = f.name == "op" && f.slot == 0;
+        if (is_op != (pass == 0)) continue;
+        if (!schema.carries(fi, t)) continue;
+        std::string why;
+        if (!parse_value(cells[c], f.format, t.f[static_cast<size_t>(f.slot)], why)) {
+          throw InputError(path, fmt::format("line {}: {}", line_no, f.name), why);
+        }
       }
     }
     items.push_back(t);
@@ -117,7 +125,12 @@ void write_vectors(const std::string& path, const Schema& schema, const std::vec
   for (size_t f = 0; f < schema.size(); ++f) out += (f ? "," : "") + schema.fields()[f].name;
   out += '\n';
   for (const Txn& t : items) {
-    for (size_t f = 0; f < schema.size(); ++f) out += fmt::format("{}0x{:x}", f ? "," : "", t.f[f]);
+    for (size_t f = 0; f < schema.size(); ++f) {
+      if (f) out += ',';
+      out += schema.carries(f, t)
+                 ? fmt::format("0x{:x}", t.f[static_cast<size_t>(schema.field(f).slot)])
+                 : "-";
+    }
     out += '\n';
   }
   write_file_atomically(path, out);
