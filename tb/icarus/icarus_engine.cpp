@@ -86,8 +86,10 @@ fs::path cache_dir() {
   return TMU_ICARUS_CACHE_DIR;
 }
 
-// The sources of `top` from rtl/manifest.txt, relative to rtl/, tmu_pkg.sv first.
-std::vector<std::string> manifest_sources(const fs::path& rtl, const std::string& top) {
+}  // namespace
+
+std::vector<std::string> manifest_sources(const std::string& top) {
+  const fs::path rtl = fs::path(TMU_SOURCE_DIR) / "rtl";
   std::istringstream manifest(read_file(rtl / "manifest.txt"));
   for (std::string line; std::getline(manifest, line);) {
     std::istringstream fields(line);
@@ -97,10 +99,8 @@ std::vector<std::string> manifest_sources(const fs::path& rtl, const std::string
     for (std::string s; fields >> s;) sources.push_back(s);
     return sources;
   }
-  throw std::runtime_error("icarus: " + top + " is not a block of rtl/manifest.txt");
+  throw std::runtime_error(top + " is not a top of rtl/manifest.txt");
 }
-
-}  // namespace
 
 std::string icarus_compat_source(const std::string& file, const std::string& text) {
   // Rule 3 (the package): the value of every `localparam int unsigned NameW = <number>;`,
@@ -150,7 +150,7 @@ std::string icarus_compile(const IcarusModel& model, double* compile_seconds) {
   // The rewritten sources (the mutation applied first, to the original text).
   std::vector<std::pair<std::string, std::string>> files;  // path in the model dir, text
   bool mutated = false;
-  for (const std::string& rel : manifest_sources(rtl, model.top)) {
+  for (const std::string& rel : manifest_sources(model.top)) {
     std::string text = read_file(rtl / rel);
     if (model.mutation && model.mutation->file == rel) {
       const size_t at = text.find(model.mutation->from);
