@@ -1,15 +1,54 @@
 #!/usr/bin/env bash
-# Set up, build, and run every test: GoogleTest suites (golden, hls, rtl, equiv), the RTL
-# lint and the Yosys synthesis check; then the sanitizer subset (scripts/sanitize.sh --ci:
-# the golden models, the host front end and the fuzz corpus under ASan and UBSan, in
-# build-asan/). Extra arguments go to the main ctest run (e.g. -L equiv).
+# Set up, build, and run every test: GoogleTest suites (golden, hls, rtl, equiv), the CLI
+# tests, the RTL lint and the Yosys check of every block; then the sanitizer subset
+# (scripts/sanitize.sh --ci: the golden models, the host front end and the fuzz corpus under
+# ASan and UBSan, in build-asan/). CI runs exactly this (.ci/run).
+#
+#   scripts/test.sh [--long] [ctest args...]      e.g. scripts/test.sh -L equiv
+#
+# --long (or TMU_LONG=1) also runs the tests labelled `long`, which the default run leaves
+#   out: the full Yosys synthesis of every block (rtl_synth_figures_<top>, docs/synth.md).
+#   A -LE of your own is added to that exclusion.
 # TMU_SKIP_SANITIZE=1 leaves the sanitizer subset out (a quick local run).
+# ctest writes JUnit XML to $build/ctest-junit.xml (TMU_JUNIT overrides the path); the ten
+# slowest tests are printed from it at the end (scripts/slowest_tests.py), with the time of
+# each phase. Times are a report: nothing here fails on them.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${TMU_BUILD_DIR:-$root/build}
+junit=${TMU_JUNIT:-$build/ctest-junit.xml}
 
+# ctest keeps no exclusion at all when given two -LE, so a -LE of the caller's is joined with
+# the default one into a single regex.
+long=${TMU_LONG:-0}
+exclude=""
+ctest_args=()
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --long) long=1; shift ;;
+    -LE | --label-exclude) exclude=$2; shift 2 ;;
+    *) ctest_args+=("$1"); shift ;;
+  esac
+done
+[[ "$long" != 1 ]] && exclude=${exclude:+($exclude)|}long
+select=()
+[[ -n "$exclude" ]] && select=(-LE "$exclude")
+
+start=$SECONDS
 "$root/scripts/build.sh"
-ctest --test-dir "$build" -j "$(nproc)" --output-on-failure "$@"
-if [[ "${TMU_SKIP_SANITIZE:-0}" != 1 ]]; then
-  "$root/scripts/sanitize.sh" --ci
+build_s=$((SECONDS - start))
+
+status=0
+ctest --test-dir "$build" -j "$(nproc)" --output-on-failure --output-junit "$junit" \
+  "${select[@]}" "${ctest_args[@]}" || status=$?
+ctest_s=$((SECONDS - start - build_s))
+"$root/scripts/slowest_tests.py" "$junit" || true  # a report: a missing file is not the verdict
+
+sanitize_s=0
+if [[ $status -eq 0 && "${TMU_SKIP_SANITIZE:-0}" != 1 ]]; then
+  "$root/scripts/sanitize.sh" --ci || status=$?
+  sanitize_s=$((SECONDS - start - build_s - ctest_s))
 fi
+echo "test.sh: build ${build_s} s, ctest ${ctest_s} s, sanitizer subset ${sanitize_s} s," \
+  "total $((SECONDS - start)) s; JUnit $junit"
+exit $status

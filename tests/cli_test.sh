@@ -29,6 +29,20 @@ expect() {
   pass "$name"
 }
 
+# run NAME -- command...: a set-up run whose outputs later checks use; it must exit 0 (a
+# failure here would otherwise show only as a confusing failure further on, or not at all).
+run() {
+  local name=$1
+  shift 2
+  local out
+  out=$("$@" 2>&1)
+  local got=$?
+  if [[ $got -ne 0 ]]; then
+    fail "$name: exit $got, expected 0"; echo "$out" | head -20; return
+  fi
+  pass "$name"
+}
+
 for cmd in "" "cosim" "ccc" "ccc encode" "ccc decode" "ccc roundtrip" "formats" "pattern" "sample" "mipgen" \
   "sweep" "render" "merge" "levels"; do
   # shellcheck disable=SC2086
@@ -45,7 +59,7 @@ expect "levels: a wrong output is caught" 1 "noise +rtl +300 .* NO: output 7 fie
   "$texsim" levels perlin --count 300 --inject-fault 7
 expect "levels: an unknown block" 2 "nosuch" -- "$texsim" levels nosuch
 
-"$texsim" pattern default img.png --width 37 --height 21 >/dev/null
+run "pattern: a 37x21 image" -- "$texsim" pattern default img.png --width 37 --height 21
 expect "encode an odd-sized image" 0 "PSNR .* dB.*bits per texel" -- "$texsim" ccc encode img.png img.ccc
 expect "decode through rtl, checked against golden" 0 "MATCH: golden = rtl, all 777 texels" -- \
   "$texsim" ccc decode img.ccc dec.png --engine rtl --check golden
@@ -68,7 +82,7 @@ echo "not an image" >fake.png
 expect "corrupt image names the file" 2 "fake.png" -- "$texsim" ccc encode fake.png fake.ccc
 [[ ! -e fake.ccc ]] && pass "no .ccc after a failed encode" || fail "fake.ccc written by a failed encode"
 echo keep >keep.png
-"$texsim" ccc decode bad_magic.ccc keep.png >/dev/null 2>&1
+expect "a failed decode onto an existing file" 2 "bad_magic.ccc" -- "$texsim" ccc decode bad_magic.ccc keep.png
 [[ $(cat keep.png) == keep ]] && pass "existing output untouched by a failed run" || fail "keep.png clobbered"
 expect "unwritable output directory" 2 "no_such_dir/x.ccc" -- "$texsim" ccc encode img.png no_such_dir/x.ccc
 expect "unknown block lists the blocks" 2 "unknown block 'nope' \(blocks: " -- "$texsim" cosim nope
@@ -82,13 +96,14 @@ expect "cosim with an injected fault fails" 1 "reproduce: texsim cosim ccc --see
   "$texsim" cosim ccc --count 3000 --seed 5 --inject-fault 100 --wave-dir waves
 [[ -s waves/ccc_mismatch.fst && -s waves/ccc_mismatch.gtkw ]] && pass "mismatch waveform written" \
   || fail "no mismatch waveform"
-"$texsim" cosim ccc --count 500 --seed 8 --save-vectors vec.csv >/dev/null
+run "save a vector file" -- "$texsim" cosim ccc --count 500 --seed 8 --save-vectors vec.csv
+[[ -s vec.csv ]] && pass "vector file written" || fail "no vec.csv"
 expect "replay a saved vector file" 0 "MATCH" -- "$texsim" cosim ccc --vectors vec.csv
 printf 'op,block\n0,0x1ffffffff\n' >bad.csv
 expect "bad vector file names line and field" 2 "bad.csv: line 2: block" -- "$texsim" cosim ccc --vectors bad.csv
 
 # The TEXRAM unit: sample request files, mipmap generation.
-"$texsim" pattern smooth tex.png --width 64 --height 32 >/dev/null
+run "pattern: a 64x32 texture" -- "$texsim" pattern smooth tex.png --width 64 --height 32
 printf 'u,v,lambda,shade\n10.5,3.25,0.5,0xFFFFFFFF\n-40,1000,-1,0x80FF80FF\n5,5,30,0xFFFFFFFF\n' >req.csv
 expect "sample golden checked against ideal" 0 "error against ideal: max" -- \
   "$texsim" sample --texture tex.png --requests req.csv --out s.csv --check ideal
@@ -130,10 +145,10 @@ printf '{ "camera": ' >cut.json
 expect "truncated scene names the file" 2 "cut.json" -- "$texsim" render cut.json --out rx
 [[ ! -e rx ]] && pass "no output after failed renders" || fail "rx written by a failed render"
 for band in 0 1 2; do
-  "$texsim" render "$root/scenes/plain.json" --tile $band/3 --out bands --no-progress >/dev/null
+  run "render band $band/3" -- "$texsim" render "$root/scenes/plain.json" --tile $band/3 --out bands --no-progress
 done
 expect "merge three bands" 0 "merged 3 bands" -- "$texsim" merge whole.png bands/render.tile-{2,0,1}-of-3.png
-"$texsim" render "$root/scenes/plain.json" --out whole --no-progress >/dev/null
+run "render the whole frame" -- "$texsim" render "$root/scenes/plain.json" --out whole --no-progress
 # idiff exits 0 only when every pixel is equal (8-bit values: its 1e-6 threshold is exactness).
 idiff -q whole.png whole/render.png >/dev/null && pass "merged bands equal the whole frame" \
   || fail "merged bands differ from the whole frame"

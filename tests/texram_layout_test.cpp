@@ -64,6 +64,47 @@ TEST(TexramLayoutTest, EveryTrilinearFootprintOf1024ReadsEveryBankExactlyOnce) {
                               16 * 16 + 64 + 16 + 4));
 }
 
+// Whether every tap of `plan` inside the texture reads the cell that holds its texel: the
+// texel lies in its level, the tap's cell is one holding it (its grid position, or a replica
+// where the level is stored wider than its grid: stored cell x holds grid position x mod
+// width), and that cell is the one the access reads in its bank; and no bank is read for
+// nothing.
+testing::AssertionResult taps_read_their_texels(const Geometry& g, const SamplePlan& plan) {
+  std::bitset<8> wanted;
+  for (int j = 0; j < plan.levels_read; ++j) {
+    const int l = plan.level[static_cast<size_t>(j)];
+    for (int k = 0; k < plan.taps_per_level; ++k) {
+      const Tap& t = plan.taps[static_cast<size_t>(j)][static_cast<size_t>(k)];
+      if (t.outside) continue;
+      auto failure = [&] {
+        return testing::AssertionFailure()
+               << "level " << l << " tap " << k << " texel (" << t.x << ", " << t.y << ") cell "
+               << t.cell.bank << ":" << t.cell.address << ": ";
+      };
+      if (t.x >= g.texel_width(l) || t.y >= g.texel_height(l))
+        return failure() << "not in the level";
+      const uint32_t gx = g.block_grid() ? t.x / 4 : t.x;
+      const uint32_t gy = g.block_grid() ? t.y / 4 : t.y;
+      bool holds = false;
+      for (uint32_t sy = gy; sy < g.stored_height(l); sy += g.grid_height(l)) {
+        for (uint32_t sx = gx; sx < g.stored_width(l); sx += g.grid_width(l)) {
+          holds = holds || g.cell(l, sx, sy) == t.cell;
+        }
+      }
+      if (!holds) return failure() << "that cell does not hold the texel";
+      if (plan.bank_address[t.cell.bank] != t.cell.address) {
+        return failure() << "its bank reads another address";
+      }
+      wanted[t.cell.bank] = true;
+    }
+  }
+  if (banks_read(plan) != wanted) {
+    return testing::AssertionFailure()
+           << "banks read " << banks_read(plan) << ", taps need " << wanted;
+  }
+  return testing::AssertionSuccess();
+}
+
 // In every border mode, on textures of every shape, at every position around the edges: no
 // bank is asked for two cells (plan_sample throws if one is), and every tap inside the texture
 // reads the cell that holds its texel.
@@ -79,9 +120,13 @@ TEST(TexramLayoutTest, EveryBorderModeReadsEachBankAtMostOnce) {
             for (int32_t lambda = -256; lambda <= (g.levels() + 1) * 256; lambda += 64) {
               for (int32_t u = -3 * 256 * 33; u <= 3 * 256 * 33; u += 97) {
                 const int32_t v = (u * 7) % (256 * 40);
-                ASSERT_NO_THROW(plan_sample(g, config, Request{u, v, lambda, 0}))
+                SamplePlan plan;
+                ASSERT_NO_THROW(plan = plan_sample(g, config, Request{u, v, lambda, 0}))
                     << "blocks " << blocks << " " << lw << "x" << lh << " " << name(b) << " "
                     << name(f);
+                ASSERT_TRUE(taps_read_their_texels(g, plan))
+                    << "blocks " << blocks << " " << lw << "x" << lh << " " << name(b) << " "
+                    << name(f) << " u " << u << " v " << v << " lambda " << lambda;
               }
             }
           }

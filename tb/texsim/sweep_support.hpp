@@ -41,9 +41,9 @@ struct SynthFigures {
   std::string cells = "-", logic = "-", depth = "-";
 };
 
-// Runs scripts/synth.sh on `top` with the parameters overridden; "?" figures when it fails.
-// Results are cached in the build directory (synth_cache/), keyed by the top, the parameters,
-// the Yosys version and the content of rtl/ and scripts/synth.sh.
+// Runs scripts/synth.sh --figures on `top` with the parameters overridden; "?" figures when it
+// fails. The script caches every result in the build directory (synth_cache/), keyed by the
+// top, the parameters, the Yosys version, the script and the top's sources.
 SynthFigures synthesize(const std::string& top,
                         const std::vector<std::pair<std::string, int>>& params);
 
