@@ -5,6 +5,7 @@
 #include <Vtmu_mipgen.h>
 #include <Vtmu_mipgen_mutant_round.h>
 #include <gtest/gtest.h>
+#include <verilated.h>
 
 #include <iostream>
 #include <memory>
@@ -165,6 +166,7 @@ TEST(MipgenCosimTest, RtlWritesReadBackAsThePyramidAt1024x1024) {
   EXPECT_EQ(mem.read_pyramid(3), texram::build_pyramid(level0));
   EXPECT_EQ(mem.cells_not_written_once(3), 0u);
 }
+
 
 // The directed tie frame: every box sum of every level is 2 mod 4, and its pyramid is the
 // one it was built from (128 at the top).
