@@ -167,7 +167,6 @@ TEST(MipgenCosimTest, RtlWritesReadBackAsThePyramidAt1024x1024) {
   EXPECT_EQ(mem.cells_not_written_once(3), 0u);
 }
 
-
 // The directed tie frame: every box sum of every level is 2 mod 4, and its pyramid is the
 // one it was built from (128 at the top).
 TEST(MipgenCosimTest, TieFrameRoundsEveryBoxHalfUp) {
