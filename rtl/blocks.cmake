@@ -205,4 +205,86 @@ tmu_mutant(ccc_cache_bilinear unreset FILE ccc/tmu_ccc_cache_bilinear.sv EXPECT 
   FROM "      hits_q        <= '0;\n" TO ""
   WHY "the hit counter starts where its flops happen to be")
 
+# TEXRAM trilinear unit (000 §2, §5, §6), and at the accuracy sweep's other widths S,W,L
+# (SubTexelBits, WeightBits, LodFracBits; `texsim cosim trilinear --widths`).
+tmu_block(trilinear)
+if(TMU_RTL_THREADS)
+  tmu_block(trilinear LEVEL rtl-threads PREFIX Vtmu_trilinear_threads ARGS --threads 2)
+endif()
+tmu_block(trilinear VARIANT s6w6l6 OPTIONS "--widths 6,6,6"
+  ARGS -GSubTexelBits=6 -GWeightBits=6 -GLodFracBits=6)
+tmu_block(trilinear VARIANT s4w4l4 OPTIONS "--widths 4,4,4"
+  ARGS -GSubTexelBits=4 -GWeightBits=4 -GLodFracBits=4)
+tmu_mutant(trilinear mirror FILE texram/tmu_trilinear_border.sv
+  FROM "reflect ? ~tap_i[CoordW-1:0] & mask : low" TO "low"
+  WHY "mirror reflects nothing (acts as wrap): wrong colours and cells once a tap crosses an edge")
+tmu_mutant(trilinear round FILE texram/tmu_trilinear_blend.sv
+  FROM "ZW'(1) << (3 * W - 1)" TO "ZW'(1) << (3 * W - 2)"
+  WHY "the blend rounds with a quarter instead of half an LSB")
+tmu_mutant(trilinear reads FILE texram/tmu_trilinear.sv
+  FROM "(t % 4 == 0 || !nearest)" TO "(t % 4 == 0 || 1'b1)"
+  WHY "nearest reads the banks of all four taps (right colours, wrong memory requests)")
+tmu_mutant(trilinear unreset FILE texram/tmu_trilinear.sv EXPECT x-leak
+  FROM "      s1_valid_q    <= 1'b0;\n      s2_valid_q    <= 1'b0;\n      s3_valid_q    <= 1'b0;\n      s4_valid_q    <= 1'b0;\n      s5_valid_q    <= 1'b0;\n"
+  TO ""
+  WHY "the five request stages' valids keep their initial values through reset (random samples enter)")
+tmu_mutant(trilinear round_w6 VARIANT s6w6l6 FILE texram/tmu_trilinear_blend.sv
+  FROM "ZW'(1) << (3 * W - 1)" TO "ZW'(1) << (3 * W - 2)"
+  WHY "at W = 6 the blend rounds with a quarter instead of half an LSB")
+tmu_mutant(trilinear weight_w4 VARIANT s4w4l4 FILE texram/tmu_trilinear_axis.sv
+  FROM "s[Frac-1 -: WeightBits]" TO "s[Frac-2 -: WeightBits]"
+  WHY "at W = 4 the filter weight is read one bit too low (frac(s) halved, its top bit lost)")
+
+# TEXRAM bank address unit (000 §2, Fig. 2), the address logic tmu_mipgen and tmu_trilinear
+# instantiate. Combinational, without a flop: no x-leak mutant (no reset to remove, nothing
+# holds an initial value; the suite's X check still runs, and stays identical).
+tmu_block(bank_address)
+tmu_mutant(bank_address row FILE texram/tmu_bank_address.sv
+  FROM "{position[AddrW-3:0], 2'b00}" TO "{position[AddrW-3:1], 3'b000}"
+  WHY "a four-plane address loses the position's lowest bit (two texel pairs share a cell)")
+tmu_mutant(bank_address parity FILE texram/tmu_bank_address.sv
+  FROM "((l % 2) == 1) == in_level_i[0]" TO "((l % 2) == 1) != in_level_i[0]"
+  WHY "a level's offset sums the levels of the other parity (the banks' levels overlap)")
+
+# Footprint assembly (000 §10, eq. 19-22), and at other setup widths D,T,F (DerivBits,
+# TableBits, LogFracBits; the trilinear unit at 8,8,8; `texsim cosim footprint --fp-widths`):
+# F = 5 takes the widening path of lambda's rounding (G = 6 fraction bits < 8), F = 12 drops 5
+# bits, with the largest table (T = 10).
+tmu_block(footprint)
+tmu_block(footprint VARIANT d8t4f5 OPTIONS "--fp-widths 8,4,5"
+  ARGS -GDerivBits=8 -GTableBits=4 -GLogFracBits=5)
+tmu_block(footprint VARIANT d16t10f12 OPTIONS "--fp-widths 16,10,12"
+  ARGS -GDerivBits=16 -GTableBits=10 -GLogFracBits=12)
+tmu_mutant(footprint round FILE footprint/tmu_footprint_average.sv
+  FROM "(SumW'(1 << head_k) >> 1)" TO "(SumW'(1 << head_k) >> 2)"
+  WHY "the average adds a quarter instead of half of N before the shift")
+tmu_mutant(footprint step FILE footprint/tmu_footprint_march.sv
+  FROM "(d_u <<< plan_log2_n_i) + d_u;" TO "(d_u <<< plan_log2_n_i);"
+  WHY "the probes start half a probe spacing off along u (the first numerator misses its + d)")
+tmu_mutant(footprint k FILE footprint/tmu_footprint_setup.sv
+  FROM "(SW'(1) << (G - 1))" TO "(SW'(1) << (G - 2))"
+  WHY "k = log2 N rounds rho up from three quarters instead of a half (too few probes)")
+tmu_mutant(footprint unreset FILE footprint/tmu_footprint.sv EXPECT x-leak
+  FROM "      probes_q <= '0;\n" TO ""
+  WHY "the probe counter starts where its flops happen to be")
+tmu_mutant(footprint k_d8 VARIANT d8t4f5 FILE footprint/tmu_footprint_setup.sv
+  FROM "(SW'(1) << (G - 1))" TO "(SW'(1) << (G - 2))"
+  WHY "at F = 5 k rounds rho up from three quarters instead of a half")
+tmu_mutant(footprint lambda_d16 VARIANT d16t10f12 FILE footprint/tmu_footprint_setup.sv
+  FROM "((SW + 1)'(1) <<< (G - 9))" TO "((SW + 1)'(1) <<< (G - 10))"
+  WHY "at F = 12 lambda's rounding to 8 fraction bits adds a quarter instead of half an LSB")
+
+# The footprint setup on its own (the setup of tmu_footprint), at the default widths.
+tmu_block(footprint_setup)
+tmu_mutant(footprint_setup direction FILE footprint/tmu_footprint_setup.sv
+  FROM "assign r2_longer = sum2 > sum1;" TO "assign r2_longer = sum2 >= sum1;"
+  WHY "equal lengths march along r2 instead of r1 (the plan's direction)")
+tmu_mutant(footprint_setup cap FILE footprint/tmu_footprint_setup.sv
+  FROM "CapW'(2 * SpacingLog2);" TO "CapW'(2 * SpacingLog2 + 2);"
+  WHY "the length cap of k lets probes come an eighth of a texel apart instead of a quarter")
+tmu_mutant(footprint_setup unreset FILE footprint/tmu_footprint_setup.sv EXPECT x-leak
+  FROM "      s1_valid_q <= 1'b0;\n      s2_valid_q <= 1'b0;\n      s3_valid_q <= 1'b0;\n      s4_valid_q <= 1'b0;\n      s5_valid_q <= 1'b0;\n      s6_valid_q <= 1'b0;\n      s7_valid_q <= 1'b0;\n"
+  TO ""
+  WHY "the seven stages' valids keep their initial values through reset (random plans leave)")
+
 tmu_write_block_tables()

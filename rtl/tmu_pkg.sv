@@ -215,6 +215,16 @@ package tmu_pkg;
   localparam int unsigned EnvSeedFrac = 0;
   typedef logic [EnvSeedW-1:0] env_seed_t;
 
+  // BankByte: UQ8.0, a TEXRAM bank cell's byte: one lane of a memory response
+  localparam int unsigned BankByteW = 8;
+  localparam int unsigned BankByteFrac = 0;
+  typedef logic [BankByteW-1:0] bank_byte_t;
+
+  // EnvPattern: UQ3.0, harness only, not a port: a TEXRAM texture's content: 0 gradient, 1 checker, 2 noise, 3 smooth, 4 random bytes, 5 given (an image file, a scene's texture)
+  localparam int unsigned EnvPatternW = 3;
+  localparam int unsigned EnvPatternFrac = 0;
+  typedef logic [EnvPatternW-1:0] env_pattern_t;
+
   // largest texture side in texels
   localparam int unsigned MaxTexSize = 4096;
 

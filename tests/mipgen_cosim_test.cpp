@@ -2,10 +2,6 @@
 // of every kind of format (interlaced, non-square, 1 x 1, 1024-texel lines), under heavy
 // back-pressure and at full throughput; the cells the rtl writes read back through the layout
 // as build_pyramid; and proof that the comparison has teeth (a mutant rounding).
-#if __has_include(<Vtmu_bank_address.h>)  // once rtl/manifest.txt lists tmu_bank_address
-#include <Vtmu_bank_address.h>
-#define TMU_HAVE_BANK_ADDRESS_MODEL 1
-#endif
 #include <Vtmu_mipgen.h>
 #include <Vtmu_mipgen_mutant_round.h>
 #include <gtest/gtest.h>
@@ -169,73 +165,6 @@ TEST(MipgenCosimTest, RtlWritesReadBackAsThePyramidAt1024x1024) {
   for (const Txn& t : run.outputs) mem.write(mipgen_txn_write(t));
   EXPECT_EQ(mem.read_pyramid(3), texram::build_pyramid(level0));
   EXPECT_EQ(mem.cells_not_written_once(3), 0u);
-}
-
-// The address unit the generator (and the trilinear unit) computes its cells with: equal to
-// Geometry::cell for every texture size, texel and block grids, one and four planes, every
-// level; every stored position of the small levels, the corners and 256 random positions of
-// the larger ones.
-TEST(MipgenCosimTest, BankAddressRtlEqualsGeometryCell) {
-#ifndef TMU_HAVE_BANK_ADDRESS_MODEL
-  GTEST_SKIP() << "no standalone model of tmu_bank_address: list it in rtl/manifest.txt";
-#else
-  auto ctx = std::make_unique<VerilatedContext>();
-  auto m = std::make_unique<Vtmu_bank_address>(ctx.get(), "TOP");
-  std::mt19937_64 rng(20261122);
-  size_t checked = 0, wrong = 0;
-  for (int lw = 0; lw <= formats::kMaxMipLog2; ++lw) {
-    for (int lh = 0; lh <= formats::kMaxMipLog2; ++lh) {
-      for (bool blocks : {false, true}) {
-        for (int planes : {1, formats::kPlanes}) {
-          const texram::Geometry g(lw, lh, planes, blocks);
-          m->cfg_log2_w_i = static_cast<uint8_t>(lw);
-          m->cfg_log2_h_i = static_cast<uint8_t>(lh);
-          m->cfg_block_grid_i = blocks;
-          m->cfg_four_planes_i = planes == formats::kPlanes;
-          for (int l = 0; l < g.levels(); ++l) {
-            const uint32_t sw = g.stored_width(l), sh = g.stored_height(l);
-            auto check = [&](uint32_t x, uint32_t y, int plane) {
-              m->level_i = static_cast<uint8_t>(l);
-              m->x_i = static_cast<uint16_t>(x);
-              m->y_i = static_cast<uint16_t>(y);
-              m->plane_i = static_cast<uint8_t>(plane);
-              m->eval();
-              const texram::BankCell want = g.cell(l, x, y, plane);
-              ++checked;
-              if (m->bank_o == want.bank && m->addr_o == want.address) return;
-              if (++wrong <= 5) {
-                ADD_FAILURE() << (1u << lw) << " x " << (1u << lh) << (blocks ? " blocks" : "")
-                              << ", " << planes << " planes: level " << l << " (" << x << ", " << y
-                              << ") plane " << plane << ": rtl bank " << int{m->bank_o}
-                              << " address " << m->addr_o << ", golden bank " << want.bank
-                              << " address " << want.address;
-              }
-            };
-            if (size_t{sw} * sh <= 256) {
-              for (uint32_t y = 0; y < sh; ++y) {
-                for (uint32_t x = 0; x < sw; ++x) {
-                  for (int p = 0; p < planes; ++p) check(x, y, p);
-                }
-              }
-            } else {
-              for (const auto& [x, y] :
-                   {std::pair{0u, 0u}, {sw - 1, 0u}, {0u, sh - 1}, {sw - 1, sh - 1}}) {
-                check(x, y, planes - 1);
-              }
-              for (int i = 0; i < 256; ++i) {
-                check(static_cast<uint32_t>(rng() % sw), static_cast<uint32_t>(rng() % sh),
-                      static_cast<int>(rng() % static_cast<uint64_t>(planes)));
-              }
-            }
-          }
-        }
-      }
-    }
-  }
-  EXPECT_EQ(wrong, 0u) << "of " << checked;
-  std::cout << checked << " positions checked\n";
-  m->final();
-#endif
 }
 
 // The directed tie frame: every box sum of every level is 2 mod 4, and its pyramid is the

@@ -1,5 +1,6 @@
 // SystemC model of the footprint assembly unit (000 §10, eq. 19-22, Figs. 12-13), the same
-// ports and handshakes as rtl/footprint/tmu_footprint.sv. Its arithmetic is the golden model's
+// ports (TMU_SC_PORTS: tb/blocks/footprint/footprint_ports.hpp) and handshakes as
+// rtl/footprint/tmu_footprint.sv. Its arithmetic is the golden model's
 // (golden/footprint/footprint.hpp: plan for the setup, probe for each probe's position,
 // average for the result); the probes are sampled by an instance of the TEXRAM trilinear unit's
 // model (hls/texram/trilinear_sc.hpp), whose memory port is the unit's. Two clocked threads:
@@ -30,8 +31,10 @@
 #include <span>
 #include <systemc>
 
+#include "blocks/footprint/footprint_ports.hpp"
 #include "footprint/footprint.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/sc_ports.hpp"
 #include "hls/texram/trilinear_sc.hpp"
 #include "texram/sampler_config.hpp"
 
@@ -39,64 +42,10 @@ namespace tmu::hls {
 
 class FootprintSc : public sc_core::sc_module {
  public:
-  template <int W>
-  using uint_t = sc_dt::sc_uint<W>;
-  template <int W>
-  using int_t = sc_dt::sc_int<W>;
-  static constexpr int kBanks = TrilinearSc::kBanks;
-  static constexpr int kAddrWidth = TrilinearSc::kAddrWidth;
-  static constexpr int kAddrBusWidth = TrilinearSc::kAddrBusWidth;
-  static constexpr int kDataWidth = TrilinearSc::kDataWidth;
-  static constexpr int kStatWidth = fmts::kStatCount.width();
   // Fragments planned whose results the averager has not yet collected, at most.
   static constexpr int kCountDepth = 4;
 
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  // The trilinear unit's configuration (passed to it).
-  sc_core::sc_in<uint_t<fmts::kMipLog2.width()>> cfg_log2_w_i{"cfg_log2_w_i"};
-  sc_core::sc_in<uint_t<fmts::kMipLog2.width()>> cfg_log2_h_i{"cfg_log2_h_i"};
-  sc_core::sc_in<uint_t<fmts::kTexKind.width()>> cfg_kind_i{"cfg_kind_i"};
-  sc_core::sc_in<uint_t<fmts::kBytePlane.width()>> cfg_single_channel_i{"cfg_single_channel_i"};
-  sc_core::sc_in<uint_t<fmts::kTexFilter.width()>> cfg_filter_i{"cfg_filter_i"};
-  sc_core::sc_in<uint_t<fmts::kTexBorder.width()>> cfg_border_u_i{"cfg_border_u_i"};
-  sc_core::sc_in<uint_t<fmts::kTexBorder.width()>> cfg_border_v_i{"cfg_border_v_i"};
-  sc_core::sc_in<uint_t<fmts::kRgba8888.width()>> cfg_border_rgba_i{"cfg_border_rgba_i"};
-  sc_core::sc_in<uint_t<fmts::kTexCombine.width()>> cfg_combine_i{"cfg_combine_i"};
-  sc_core::sc_in<uint_t<fmts::kRgba8888.width()>> cfg_constant_rgba_i{"cfg_constant_rgba_i"};
-  // The setup's.
-  sc_core::sc_in<uint_t<fmts::kProbeLog2.width()>> cfg_log2_max_probes_i{"cfg_log2_max_probes_i"};
-  sc_core::sc_in<uint_t<fmts::kQRule.width()>> cfg_q_rule_i{"cfg_q_rule_i"};
-
-  sc_core::sc_in<bool> clut_valid_i{"clut_valid_i"};
-  sc_core::sc_out<bool> clut_ready_o{"clut_ready_o"};
-  sc_core::sc_in<uint_t<fmts::kClutIndex.width()>> clut_addr_i{"clut_addr_i"};
-  sc_core::sc_in<uint_t<fmts::kRgba8888.width()>> clut_rgba_i{"clut_rgba_i"};
-
-  sc_core::sc_in<bool> req_valid_i{"req_valid_i"};
-  sc_core::sc_out<bool> req_ready_o{"req_ready_o"};
-  sc_core::sc_in<int_t<fmts::kTexCoord.width()>> req_u_i{"req_u_i"};
-  sc_core::sc_in<int_t<fmts::kTexCoord.width()>> req_v_i{"req_v_i"};
-  sc_core::sc_in<int_t<fmts::kTexDeriv.width()>> req_r1u_i{"req_r1u_i"};
-  sc_core::sc_in<int_t<fmts::kTexDeriv.width()>> req_r1v_i{"req_r1v_i"};
-  sc_core::sc_in<int_t<fmts::kTexDeriv.width()>> req_r2u_i{"req_r2u_i"};
-  sc_core::sc_in<int_t<fmts::kTexDeriv.width()>> req_r2v_i{"req_r2v_i"};
-  sc_core::sc_in<uint_t<fmts::kRgba8888.width()>> req_shade_i{"req_shade_i"};
-
-  // The trilinear unit's memory port.
-  sc_core::sc_out<bool> mem_req_valid_o{"mem_req_valid_o"};
-  sc_core::sc_in<bool> mem_req_ready_i{"mem_req_ready_i"};
-  sc_core::sc_out<uint_t<kBanks>> mem_req_en_o{"mem_req_en_o"};
-  sc_core::sc_out<sc_dt::sc_biguint<kAddrBusWidth>> mem_req_addr_o{"mem_req_addr_o"};
-  sc_core::sc_in<bool> mem_resp_valid_i{"mem_resp_valid_i"};
-  sc_core::sc_in<uint_t<kDataWidth>> mem_resp_data_i{"mem_resp_data_i"};
-
-  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
-  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
-  sc_core::sc_out<uint_t<fmts::kRgba8888.width()>> out_rgba_o{"out_rgba_o"};
-
-  sc_core::sc_out<uint_t<kStatWidth>> stat_probes_o{"stat_probes_o"};
+  TMU_SC_PORTS(footprint)
 
   SC_HAS_PROCESS(FootprintSc);
   FootprintSc(sc_core::sc_module_name name, const footprint::Widths& widths = {},
@@ -182,13 +131,19 @@ class FootprintSc : public sc_core::sc_module {
   }
 
   footprint::Request fragment_request() const {
+    const auto coord = [](const auto& port) {
+      return static_cast<int32_t>(signed_value(port.read(), fmts::kTexCoord));
+    };
+    const auto deriv = [](const auto& port) {
+      return static_cast<int32_t>(signed_value(port.read(), fmts::kTexDeriv));
+    };
     footprint::Request r;
-    r.u = static_cast<int32_t>(req_u_i.read().to_int());
-    r.v = static_cast<int32_t>(req_v_i.read().to_int());
-    r.r1u = static_cast<int32_t>(req_r1u_i.read().to_int());
-    r.r1v = static_cast<int32_t>(req_r1v_i.read().to_int());
-    r.r2u = static_cast<int32_t>(req_r2u_i.read().to_int());
-    r.r2v = static_cast<int32_t>(req_r2v_i.read().to_int());
+    r.u = coord(req_u_i);
+    r.v = coord(req_v_i);
+    r.r1u = deriv(req_r1u_i);
+    r.r1v = deriv(req_r1v_i);
+    r.r2u = deriv(req_r2u_i);
+    r.r2v = deriv(req_r2v_i);
     r.shade = static_cast<uint32_t>(req_shade_i.read());
     return r;
   }
@@ -210,8 +165,8 @@ class FootprintSc : public sc_core::sc_module {
     return c;
   }
 
-  void pass_clut_write(const uint_t<fmts::kClutIndex.width()>& addr,
-                       const uint_t<fmts::kRgba8888.width()>& rgba) {
+  void pass_clut_write(const sc_port_t<fmts::kClutIndex.width()>& addr,
+                       const sc_port_t<fmts::kRgba8888.width()>& rgba) {
     tri_clut_addr_.write(addr);
     tri_clut_rgba_.write(rgba);
     tri_clut_valid_.write(true);
@@ -228,9 +183,10 @@ class FootprintSc : public sc_core::sc_module {
     const int n = 1 << plan.log2_n;
     for (int i = 0; i < n; ++i) {
       const texram::Request q = footprint::probe(request, plan, i, sampler);
-      tri_req_u_.write(q.u);
-      tri_req_v_.write(q.v);
-      tri_req_lambda_.write(q.lambda);
+      // Raw port bits (the trilinear unit's ports are its description's).
+      tri_req_u_.write(static_cast<uint32_t>(q.u) & ((1u << fmts::kTexCoord.width()) - 1));
+      tri_req_v_.write(static_cast<uint32_t>(q.v) & ((1u << fmts::kTexCoord.width()) - 1));
+      tri_req_lambda_.write(static_cast<uint32_t>(q.lambda) & ((1u << fmts::kLod.width()) - 1));
       tri_req_shade_.write(q.shade);
       tri_req_valid_.write(true);
       do {
@@ -284,9 +240,7 @@ class FootprintSc : public sc_core::sc_module {
   }
 
   template <int W>
-  using sig = sc_core::sc_signal<uint_t<W>>;
-  template <int W>
-  using ssig = sc_core::sc_signal<int_t<W>>;
+  using sig = sc_core::sc_signal<sc_port_t<W>>;
 
   footprint::Widths widths_;
   TrilinearSc tri_;
@@ -294,8 +248,8 @@ class FootprintSc : public sc_core::sc_module {
   sig<fmts::kClutIndex.width()> tri_clut_addr_{"tri_clut_addr"};
   sig<fmts::kRgba8888.width()> tri_clut_rgba_{"tri_clut_rgba"};
   sc_core::sc_signal<bool> tri_req_valid_{"tri_req_valid"}, tri_req_ready_{"tri_req_ready"};
-  ssig<fmts::kTexCoord.width()> tri_req_u_{"tri_req_u"}, tri_req_v_{"tri_req_v"};
-  ssig<fmts::kLod.width()> tri_req_lambda_{"tri_req_lambda"};
+  sig<fmts::kTexCoord.width()> tri_req_u_{"tri_req_u"}, tri_req_v_{"tri_req_v"};
+  sig<fmts::kLod.width()> tri_req_lambda_{"tri_req_lambda"};
   sig<fmts::kRgba8888.width()> tri_req_shade_{"tri_req_shade"};
   sc_core::sc_signal<bool> tri_out_valid_{"tri_out_valid"}, tri_out_ready_{"tri_out_ready"};
   sig<fmts::kRgba8888.width()> tri_out_rgba_{"tri_out_rgba"};

@@ -1,11 +1,12 @@
-// SystemC model of the TEXRAM trilinear unit (000 §2, §5, §6), the same ports and handshakes
-// as rtl/texram/tmu_trilinear.sv. Its datapath is the golden model's (golden/texram/
-// trilinear.hpp: plan_sample for the levels, weights, border operators, taps and bank access;
-// tap_colour, blend_taps and combine for the colour); the module adds the clocking: one
-// clocked thread that, while idle, takes a CLUT write or a request; for a request it makes
-// the sample's accesses one after the other (one per byte plane, plane p at address + p,
-// each request held until the memory takes it, then its response awaited), and loads the
-// result into a one-entry output register. A sample with nothing to read makes no access.
+// SystemC model of the TEXRAM trilinear unit (000 §2, §5, §6), the same ports (TMU_SC_PORTS:
+// tb/blocks/trilinear/trilinear_ports.hpp) and handshakes as rtl/texram/tmu_trilinear.sv. Its
+// datapath is the golden model's (golden/texram/ trilinear.hpp: plan_sample for the levels,
+// weights, border operators, taps and bank access; tap_colour, blend_taps and combine for the
+// colour); the module adds the clocking: one clocked thread that, while idle, takes a CLUT write or
+// a request; for a request it makes the sample's accesses one after the other (one per byte plane,
+// plane p at address + p, each request held until the memory takes it, then its response awaited),
+// and loads the result into a one-entry output register. A sample with nothing to read makes no
+// access.
 //
 // It is sequential (several cycles per sample, one access in flight); only the transactions
 // and the memory accesses match the RTL, not its timing.
@@ -18,7 +19,9 @@
 #include <cstdint>
 #include <systemc>
 
+#include "blocks/trilinear/trilinear_ports.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/sc_ports.hpp"
 #include "texram/layout.hpp"
 #include "texram/trilinear.hpp"
 
@@ -28,51 +31,7 @@ namespace fmts = tmu::formats;
 
 class TrilinearSc : public sc_core::sc_module {
  public:
-  template <int W>
-  using uint_t = sc_dt::sc_uint<W>;
-  template <int W>
-  using int_t = sc_dt::sc_int<W>;
-  static constexpr int kBanks = fmts::kBanks;
-  static constexpr int kAddrWidth = fmts::kBankAddr.width();
-  static constexpr int kAddrBusWidth = kBanks * kAddrWidth;
-  static constexpr int kDataWidth = kBanks * 8;
-
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  sc_core::sc_in<uint_t<fmts::kMipLog2.width()>> cfg_log2_w_i{"cfg_log2_w_i"};
-  sc_core::sc_in<uint_t<fmts::kMipLog2.width()>> cfg_log2_h_i{"cfg_log2_h_i"};
-  sc_core::sc_in<uint_t<fmts::kTexKind.width()>> cfg_kind_i{"cfg_kind_i"};
-  sc_core::sc_in<uint_t<fmts::kBytePlane.width()>> cfg_single_channel_i{"cfg_single_channel_i"};
-  sc_core::sc_in<uint_t<fmts::kTexFilter.width()>> cfg_filter_i{"cfg_filter_i"};
-  sc_core::sc_in<uint_t<fmts::kTexBorder.width()>> cfg_border_u_i{"cfg_border_u_i"};
-  sc_core::sc_in<uint_t<fmts::kTexBorder.width()>> cfg_border_v_i{"cfg_border_v_i"};
-  sc_core::sc_in<uint_t<fmts::kRgba8888.width()>> cfg_border_rgba_i{"cfg_border_rgba_i"};
-  sc_core::sc_in<uint_t<fmts::kTexCombine.width()>> cfg_combine_i{"cfg_combine_i"};
-  sc_core::sc_in<uint_t<fmts::kRgba8888.width()>> cfg_constant_rgba_i{"cfg_constant_rgba_i"};
-
-  sc_core::sc_in<bool> clut_valid_i{"clut_valid_i"};
-  sc_core::sc_out<bool> clut_ready_o{"clut_ready_o"};
-  sc_core::sc_in<uint_t<fmts::kClutIndex.width()>> clut_addr_i{"clut_addr_i"};
-  sc_core::sc_in<uint_t<fmts::kRgba8888.width()>> clut_rgba_i{"clut_rgba_i"};
-
-  sc_core::sc_in<bool> req_valid_i{"req_valid_i"};
-  sc_core::sc_out<bool> req_ready_o{"req_ready_o"};
-  sc_core::sc_in<int_t<fmts::kTexCoord.width()>> req_u_i{"req_u_i"};
-  sc_core::sc_in<int_t<fmts::kTexCoord.width()>> req_v_i{"req_v_i"};
-  sc_core::sc_in<int_t<fmts::kLod.width()>> req_lambda_i{"req_lambda_i"};
-  sc_core::sc_in<uint_t<fmts::kRgba8888.width()>> req_shade_i{"req_shade_i"};
-
-  sc_core::sc_out<bool> mem_req_valid_o{"mem_req_valid_o"};
-  sc_core::sc_in<bool> mem_req_ready_i{"mem_req_ready_i"};
-  sc_core::sc_out<uint_t<kBanks>> mem_req_en_o{"mem_req_en_o"};
-  sc_core::sc_out<sc_dt::sc_biguint<kAddrBusWidth>> mem_req_addr_o{"mem_req_addr_o"};
-  sc_core::sc_in<bool> mem_resp_valid_i{"mem_resp_valid_i"};
-  sc_core::sc_in<uint_t<kDataWidth>> mem_resp_data_i{"mem_resp_data_i"};
-
-  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
-  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
-  sc_core::sc_out<uint_t<fmts::kRgba8888.width()>> out_rgba_o{"out_rgba_o"};
+  TMU_SC_PORTS(trilinear)
 
   SC_HAS_PROCESS(TrilinearSc);
   TrilinearSc(sc_core::sc_module_name name, const texram::Widths& widths = {})
@@ -106,9 +65,9 @@ class TrilinearSc : public sc_core::sc_module {
         clut_[static_cast<uint8_t>(clut_addr_i.read())] = static_cast<uint32_t>(clut_rgba_i.read());
       }
       if (req_valid_i.read()) {
-        serve({static_cast<int32_t>(req_u_i.read().to_int()),
-               static_cast<int32_t>(req_v_i.read().to_int()),
-               static_cast<int32_t>(req_lambda_i.read().to_int()),
+        serve({static_cast<int32_t>(signed_value(req_u_i.read(), fmts::kTexCoord)),
+               static_cast<int32_t>(signed_value(req_v_i.read(), fmts::kTexCoord)),
+               static_cast<int32_t>(signed_value(req_lambda_i.read(), fmts::kLod)),
                static_cast<uint32_t>(req_shade_i.read())});
       }
     }
@@ -137,15 +96,16 @@ class TrilinearSc : public sc_core::sc_module {
     return c;
   }
 
-  // One access of the eight banks: request (held until taken), then its response.
+  // One access of the eight banks: request (held until taken), then its response. Plane p
+  // reads address + p; a bank not read shows 0 + p, as the RTL's address bus does.
   void access(const texram::SamplePlan& plan, int plane, texram::AccessData& data) {
-    uint_t<kBanks> en = 0;
-    sc_dt::sc_biguint<kAddrBusWidth> addr = 0;
-    for (int b = 0; b < kBanks; ++b) {
+    constexpr int kW = fmts::kBankAddr.width();
+    sc_port_t<fmts::kBanks> en = 0;
+    sc_port_t<fmts::kBanks* kW> addr = 0;
+    for (int b = 0; b < fmts::kBanks; ++b) {
       const auto& a = plan.bank_address[static_cast<size_t>(b)];
-      if (!a) continue;
-      en[b] = 1;
-      addr.range((b + 1) * kAddrWidth - 1, b * kAddrWidth) = *a + static_cast<uint32_t>(plane);
+      en[b] = a.has_value();
+      addr.range((b + 1) * kW - 1, b * kW) = a.value_or(0) + static_cast<uint32_t>(plane);
     }
     mem_req_en_o.write(en);
     mem_req_addr_o.write(addr);
@@ -158,7 +118,7 @@ class TrilinearSc : public sc_core::sc_module {
       step();
     } while (!mem_resp_valid_i.read());
     const uint64_t bytes = mem_resp_data_i.read().to_uint64();
-    for (size_t b = 0; b < kBanks; ++b) {
+    for (size_t b = 0; b < fmts::kBanks; ++b) {
       data[b][static_cast<size_t>(plane)] = static_cast<uint8_t>(bytes >> (8 * b));
     }
   }

@@ -144,7 +144,7 @@ module tmu_footprint #(
     .plan_shade_o          (plan_shade),
     .plan_log2_n_o         (plan_log2_n),
     .plan_lambda_o         (plan_lambda),
-    .busy_o                (setup_busy)
+    .stat_busy_o           (setup_busy)
   );
 
   // ---- Marcher --------------------------------------------------------------------------------

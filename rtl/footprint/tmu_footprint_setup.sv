@@ -35,8 +35,8 @@
 ///                leading one
 ///   S6 log sums  log2 |r_max|, log2 q, rho
 ///   S7 plan      k, lambda: the plan_* outputs
-/// A fragment accepted at an edge is on plan_* 7 cycles later when nothing stalls. busy_o:
-/// a fragment is in a stage.
+/// A fragment accepted at an edge is on plan_* 7 cycles later when nothing stalls.
+/// stat_busy_o: a fragment is in a stage (0 whenever the setup is quiet).
 ///
 /// Configuration (cfg_*): quasi-static. cfg_log2_max_probes_i above 4 acts as 4 (an
 /// assertion flags it).
@@ -84,7 +84,7 @@ module tmu_footprint_setup #(
   output tmu_pkg::lod_t            plan_lambda_o,
 
   /// A fragment is in the setup.
-  output logic                     busy_o
+  output logic                     stat_busy_o
 );
 
   localparam int unsigned D   = DerivBits;
@@ -137,8 +137,8 @@ module tmu_footprint_setup #(
   assign s6_load     = s5_valid_q && s6_ready;
   assign s7_load     = s6_valid_q && s7_ready;
 
-  assign busy_o = s1_valid_q || s2_valid_q || s3_valid_q || s4_valid_q || s5_valid_q ||
-                  s6_valid_q || s7_valid_q;
+  assign stat_busy_o = s1_valid_q || s2_valid_q || s3_valid_q || s4_valid_q || s5_valid_q ||
+                       s6_valid_q || s7_valid_q;
 
   // The fragment's data that travels along unchanged: centre and shade; the four derivative
   // components until the direction is chosen (S4), then its two.
@@ -449,7 +449,7 @@ module tmu_footprint_setup #(
   // The configuration is within its range (0..4 probes' log2).
   property p_max_probes_in_range;
     @(posedge clk_i) disable iff (!rst_ni)
-      busy_o |-> cfg_log2_max_probes_i <= KW'(tmu_pkg::MaxProbeLog2);
+      stat_busy_o |-> cfg_log2_max_probes_i <= KW'(tmu_pkg::MaxProbeLog2);
   endproperty
   a_max_probes_in_range: assert property (p_max_probes_in_range);
 `endif

@@ -29,13 +29,13 @@ module tmu_bank_address #(
   /// The grid is 4 x 4 CCC blocks (x, y are block coordinates), else texels.
   input  logic                 cfg_block_grid_i,
   /// The stored position and the byte plane.
-  input  tmu_pkg::mip_level_t  level_i,
-  input  tmu_pkg::mip_coord_t  x_i,
-  input  tmu_pkg::mip_coord_t  y_i,
-  input  tmu_pkg::byte_plane_t plane_i,
+  input  tmu_pkg::mip_level_t  in_level_i,
+  input  tmu_pkg::mip_coord_t  in_x_i,
+  input  tmu_pkg::mip_coord_t  in_y_i,
+  input  tmu_pkg::byte_plane_t in_plane_i,
   /// Its bank and cell address within the bank.
-  output tmu_pkg::bank_t       bank_o,
-  output tmu_pkg::bank_addr_t  addr_o
+  output tmu_pkg::bank_t       out_bank_o,
+  output tmu_pkg::bank_addr_t  out_addr_o
 );
 
   localparam int unsigned AddrW  = tmu_pkg::BankAddrW;
@@ -63,10 +63,10 @@ module tmu_bank_address #(
     end
   endfunction
 
-  logic [AddrW-1:0]  offset;      // first position of level_i in its banks
+  logic [AddrW-1:0]  offset;      // first position of in_level_i in its banks
   logic [CellsW-1:0] cells_log2;  // log2 of the positions of one level (loop variable)
   logic [AddrW-1:0]  position;
-  logic [Log2W-1:0]  row_log2;    // log2 of the positions per row of level_i
+  logic [Log2W-1:0]  row_log2;    // log2 of the positions per row of in_level_i
 
   always_comb begin
     offset     = '0;
@@ -74,15 +74,17 @@ module tmu_bank_address #(
     for (int l = 0; l < MaxLog2; l++) begin
       cells_log2 = CellsW'(half_log2(cfg_log2_w_i, LevelW'(l), cfg_block_grid_i)) +
                    CellsW'(half_log2(cfg_log2_h_i, LevelW'(l), cfg_block_grid_i));
-      if (LevelW'(l) < level_i && ((l % 2) == 1) == level_i[0]) begin
+      if (LevelW'(l) < in_level_i && ((l % 2) == 1) == in_level_i[0]) begin
         offset = offset + (AddrW'(1) << cells_log2);
       end
     end
   end
 
-  assign row_log2 = half_log2(cfg_log2_w_i, level_i, cfg_block_grid_i);
-  assign position = offset + (AddrW'(y_i[CoordW-1:1]) << row_log2) + AddrW'(x_i[CoordW-1:1]);
-  assign addr_o   = (cfg_four_planes_i ? {position[AddrW-3:0], 2'b00} : position) + AddrW'(plane_i);
-  assign bank_o   = {level_i[0], y_i[0], x_i[0]};
+  assign row_log2   = half_log2(cfg_log2_w_i, in_level_i, cfg_block_grid_i);
+  assign position   = offset + (AddrW'(in_y_i[CoordW-1:1]) << row_log2) +
+                      AddrW'(in_x_i[CoordW-1:1]);
+  assign out_addr_o = (cfg_four_planes_i ? {position[AddrW-3:0], 2'b00} : position) +
+                      AddrW'(in_plane_i);
+  assign out_bank_o = {in_level_i[0], in_y_i[0], in_x_i[0]};
 
 endmodule

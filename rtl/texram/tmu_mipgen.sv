@@ -292,12 +292,12 @@ module tmu_mipgen #(
     .cfg_log2_h_i      (cfg_log2_h_i),
     .cfg_four_planes_i (cfg_four_planes_i),
     .cfg_block_grid_i  (1'b0),
-    .level_i           (lvl_q),
-    .x_i               (wr_x_o),
-    .y_i               (wr_y_o),
-    .plane_i           (cfg_plane_i),
-    .bank_o            (wr_bank_o),
-    .addr_o            (wr_addr_o)
+    .in_level_i        (lvl_q),
+    .in_x_i            (wr_x_o),
+    .in_y_i            (wr_y_o),
+    .in_plane_i        (cfg_plane_i),
+    .out_bank_o        (wr_bank_o),
+    .out_addr_o        (wr_addr_o)
   );
 
   // Assertions run under Verilator (--assert); Yosys 0.23 cannot parse concurrent assertions

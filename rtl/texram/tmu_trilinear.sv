@@ -307,12 +307,12 @@ module tmu_trilinear #(
       .cfg_log2_h_i      (cfg_log2_h_i),
       .cfg_four_planes_i (four_planes),
       .cfg_block_grid_i  (kind_ccc),
-      .level_i           (J == 0 ? s3_level0_q : s3_level1_q),
-      .x_i               (sx),
-      .y_i               (sy),
-      .plane_i           ('0),
-      .bank_o            (bank),
-      .addr_o            (tap_addr[t*AddrW +: AddrW])
+      .in_level_i        (J == 0 ? s3_level0_q : s3_level1_q),
+      .in_x_i            (sx),
+      .in_y_i            (sy),
+      .in_plane_i        ('0),
+      .out_bank_o        (bank),
+      .out_addr_o        (tap_addr[t*AddrW +: AddrW])
     );
     assign tap_bank[t*3 +: 3] = bank;
     assign tap_info[t*TapInfoW +: TapInfoW] = {

@@ -7,12 +7,10 @@
 #include "blocks/coord_gen_block.hpp"
 #include "blocks/cube_map_block.hpp"
 #include "blocks/deflect_block.hpp"
-#include "blocks/footprint_block.hpp"
 #include "blocks/material_block.hpp"
 #include "blocks/mipgen_block.hpp"
 #include "blocks/normal_encoder_block.hpp"
 #include "blocks/specular_combine_block.hpp"
-#include "blocks/trilinear_block.hpp"
 
 namespace tmu::tb {
 
@@ -53,14 +51,6 @@ std::vector<BlockInfo> block_list() {
       {"mipgen",
        "TEXRAM mipmap generator (000 §12, Fig. 14): 2x2 box levels from a texel stream, bank "
        "writes",
-       {}},
-      {"trilinear",
-       "TEXRAM trilinear unit (000 §2, §5, §6): 8-bank mipmap, border modes, texel "
-       "configurations, eq. 5",
-       {}},
-      {"footprint",
-       "Footprint assembly (000 §10): N trilinear probes along the longer derivative, "
-       "averaged",
        {}},
       {"coord-gen",
        "Shading/environment-map coordinates (001 §5, eq. 17-22): seven tables -> uN, vN, "
@@ -108,8 +98,6 @@ std::unique_ptr<Block> make_block(const std::string& name_or_alias, const BlockO
   }
   if (name == "ccc") return std::make_unique<CccDecoderBlock>(options.seed);
   if (name == "mipgen") return std::make_unique<MipgenBlock>(options);
-  if (name == "trilinear") return std::make_unique<TrilinearBlock>(options);
-  if (name == "footprint") return std::make_unique<FootprintBlock>(options);
   if (name == "coord-gen") return std::make_unique<CoordGenBlock>(options.seed);
   if (name == "cube-map") return std::make_unique<CubeMapBlock>(options);
   if (name == "deflect") return std::make_unique<DeflectBlock>(options);

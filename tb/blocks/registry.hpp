@@ -35,14 +35,13 @@ struct BlockOptions {
   // (its size; sides powers of two up to 1024).
   std::string tri_pattern;
   std::string tri_image;
-  // The unit's widths; the rtl engine is verilated at 8,8,8 only.
+  // The unit's widths; the rtl engine is verilated at a few (rtl/blocks.cmake).
   texram::Widths tri_widths;
-  // footprint: the trilinear unit's environment as above (tri_*), and the setup's
-  // configuration: each field that is set overrides its draw from the seed.
+  // footprint: the trilinear unit's environment as above (tri_*), and (footprint_setup too) the
+  // setup's configuration: each field that is set overrides its draw from the seed.
   std::optional<int> fp_log2_max_probes;  // 0..4: at most 2^this probes
   std::optional<footprint::QRule> fp_q_rule;
-  // The setup's widths D, T, F; the rtl engine is verilated at a few (rtl/CMakeLists.txt:
-  // TMU_FOOTPRINT_VARIANTS).
+  // The setup's widths D, T, F; the rtl engine is verilated at a few (rtl/blocks.cmake).
   footprint::Widths fp_widths;
   // deflect: the map memory answers a block request after this many cycles (1..1000), plus
   // 0..dfl_map_jitter cycles drawn from the seed per request.

@@ -11,7 +11,7 @@
 #include "blocks/deflect_block.hpp"
 #include "blocks/normal_encoder_block.hpp"
 #include "blocks/specular_combine_block.hpp"
-#include "blocks/trilinear_block.hpp"
+#include "blocks/trilinear/trilinear_block.hpp"
 #include "deflect/bump_map.hpp"
 #include "deflect/coord_tables.hpp"
 #include "deflect/cube_map.hpp"
@@ -61,8 +61,10 @@ struct Runner {
     UnitRun unit;
     unit.kind = "trilinear";
     unit.material = in.material.name + "." + what;
-    attach(unit, std::make_shared<tb::TrilinearBlock>(
-                     tb::BlockOptions{}, tb::TrilinearEnv{map.texture, map.sampler, what}));
+    const auto block = std::make_shared<tb::TrilinearBlock>(
+        tb::BlockOptions{}, tb::TrilinearEnv{map.texture, map.sampler, what});
+    attach(unit, block);
+    unit.items = block->setup_items();  // the map's configuration (and CLUT)
     for (const auto& [u, v, lambda] : uvl)
       unit.items.push_back(tb::trilinear_sample_item(u, v, lambda));
     std::vector<uint32_t> rgba;

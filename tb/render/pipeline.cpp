@@ -6,9 +6,9 @@
 #include <stdexcept>
 
 #include "blocks/ccc_cache_bilinear/ccc_cache_bilinear_block.hpp"
-#include "blocks/footprint_block.hpp"
+#include "blocks/footprint/footprint_block.hpp"
 #include "blocks/mipgen_block.hpp"
-#include "blocks/trilinear_block.hpp"
+#include "blocks/trilinear/trilinear_block.hpp"
 #include "ccc/ccc_cache_bilinear.hpp"
 #include "ccc/ccc_encoder.hpp"
 #include "common/error.hpp"
@@ -42,11 +42,10 @@ UnitRun texture_unit(const host::Material& mat, const MaterialTexture& tex,
   run.material = mat.name;
   if (mat.footprint) {
     run.kind = "footprint";
-    tb::FootprintEnv env{{tex.texram, mat.sampler, mat.name}, *mat.footprint};
-    attach(run, std::make_shared<tb::FootprintBlock>(tb::BlockOptions{}, env));
-    for (size_t i = 0; i < tex.texram->clut.size(); ++i) {
-      run.items.push_back(tb::footprint_clut_item(static_cast<uint8_t>(i), tex.texram->clut[i]));
-    }
+    const auto block = std::make_shared<tb::FootprintBlock>(
+        tb::BlockOptions{}, tb::FootprintEnv{{tex.texram, mat.sampler, mat.name}, *mat.footprint});
+    attach(run, block);
+    run.items = block->setup_items();  // the configuration (and CLUT) of the texture
     for (size_t k = 0; k < frags.size(); ++k) {
       const host::FragmentRecord& r = records[frags[k]];
       run.items.push_back(
@@ -54,9 +53,10 @@ UnitRun texture_unit(const host::Material& mat, const MaterialTexture& tex,
     }
   } else {
     run.kind = "trilinear";
-    tb::TrilinearEnv env{tex.texram, mat.sampler, mat.name};
-    attach(run, std::make_shared<tb::TrilinearBlock>(tb::BlockOptions{}, env));
-    run.items = tb::trilinear_clut_load(*tex.texram);
+    const auto block = std::make_shared<tb::TrilinearBlock>(
+        tb::BlockOptions{}, tb::TrilinearEnv{tex.texram, mat.sampler, mat.name});
+    attach(run, block);
+    run.items = block->setup_items();  // the configuration (and CLUT) of the texture
     for (size_t k = 0; k < frags.size(); ++k) {
       const host::FragmentRecord& r = records[frags[k]];
       run.items.push_back(tb::trilinear_sample_item(r.u, r.v, r.lambda, shades[k]));

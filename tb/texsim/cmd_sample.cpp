@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "blocks/trilinear_block.hpp"
+#include "blocks/trilinear/trilinear_block.hpp"
 #include "ccc/ccc_texture.hpp"
 #include "common/error.hpp"
 #include "texram/page_model.hpp"
@@ -68,15 +68,15 @@ Run run_engine(const std::string& engine, const texram::TexramTexture& tex,
       }
     }
     run.memory = pages.stats();
-  } else {  // hls, rtl: the trilinear block's engines, the CLUT loaded first
-    tb::TrilinearEnv env{std::make_shared<const texram::TexramTexture>(tex), config, "sample"};
-    std::vector<tb::Txn> items = tb::trilinear_clut_load(tex);
+  } else {  // hls, rtl: the trilinear block's engines, the configuration (and CLUT) first
+    const tb::TrilinearBlock block(
+        tb::BlockOptions{}, {std::make_shared<const texram::TexramTexture>(tex), config, "sample"});
+    std::vector<tb::Txn> items = block.setup_items();
     for (const SampleRequest& r : requests) {
       const texram::Request p = port_request(r);
       items.push_back(tb::trilinear_sample_item(p.u, p.v, p.lambda, p.shade));
     }
-    const tb::RunResult result =
-        tb::TrilinearBlock(tb::BlockOptions{}, env).engine(engine)->run(items, tb::RunOptions{});
+    const tb::RunResult result = block.engine(engine)->run(items, tb::RunOptions{});
     if (!result.error.empty()) throw std::runtime_error(engine + " run failed: " + result.error);
     for (const tb::Txn& t : result.outputs) run.rgba.push_back(static_cast<uint32_t>(t.f[0]));
     texram::PageStats m;
@@ -97,7 +97,8 @@ void report(const Run& run, size_t n) {
   if (run.cycles) {
     const double per_clock = static_cast<double>(n) / static_cast<double>(run.cycles);
     fmt::print(
-        "  measured: {} clock cycles (with the CLUT load and pipeline fill) -> {:.3f} samples per "
+        "  measured: {} clock cycles (with the configuration, CLUT load and pipeline fill) -> "
+        "{:.3f} samples per "
         "clock, {:.2f} M samples/s at {:.1f} "
         "MHz\n",
         run.cycles, per_clock, per_clock * texram::kUnitClockMhz, texram::kUnitClockMhz);

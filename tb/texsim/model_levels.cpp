@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "blocks/registry.hpp"
-#include "blocks/trilinear_block.hpp"
+#include "blocks/trilinear/trilinear_block.hpp"
 #include "harness/cosim.hpp"
 #include "render/render.hpp"
 

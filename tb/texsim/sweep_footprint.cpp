@@ -27,7 +27,7 @@
 #include <sstream>
 #include <thread>
 
-#include "blocks/trilinear_block.hpp"
+#include "blocks/trilinear/texram_memory.hpp"
 #include "common/error.hpp"
 #include "common/image.hpp"
 #include "common/test_patterns.hpp"
@@ -114,23 +114,21 @@ footprint::Request footprint_request(const host::FragmentRecord& r) {
   return {r.u, r.v, r.r1[0], r.r1[1], r.r2[0], r.r2[1], r.shade};
 }
 
-// One access log per material, as the renderer has one unit per material; its prediction is
+// One page model per material, as the renderer has one unit per material; its prediction is
 // the renderer's for golden: one period per access, a second when a bank faults.
 struct PageLogs {
-  explicit PageLogs(size_t materials) : logs(materials) {}
+  explicit PageLogs(size_t materials) : pages(materials) {}
   void add(int material, const texram::SamplePlan& plan) {
-    logs[static_cast<size_t>(material)].sample(plan.bank_address, plan.planes);
+    for (const tb::BankAccess& a : tb::sample_accesses(plan)) {
+      pages[static_cast<size_t>(material)].access(a.cells);
+    }
   }
   uint64_t cycles() const {
     uint64_t total = 0;
-    for (const tb::TexramAccessLog& l : logs) {
-      const tb::Counters c = l.counters();
-      total += tb::counter_value(c, "accesses").value_or(0) +
-               tb::counter_value(c, "slow_accesses").value_or(0);
-    }
+    for (const texram::PageModel& p : pages) total += p.stats().accesses + p.stats().slow_accesses;
     return total;
   }
-  std::vector<tb::TexramAccessLog> logs;
+  std::vector<texram::PageModel> pages;
 };
 
 Outcome run_trilinear(const Frame& f) {
