@@ -9,7 +9,6 @@
 #include "blocks/deflect_block.hpp"
 #include "blocks/footprint_block.hpp"
 #include "blocks/material_block.hpp"
-#include "blocks/mipgen_block.hpp"
 #include "blocks/normal_encoder_block.hpp"
 #include "blocks/specular_combine_block.hpp"
 #include "blocks/trilinear_block.hpp"
@@ -50,10 +49,6 @@ std::vector<BlockInfo> block_list() {
   for (const Entry& e : kEntries) out.push_back(e.info());
   std::vector<BlockInfo> old = {
       {"ccc", "CCC decoder (000 §3, Fig. 5): block word + texel address -> RGB888", {}},
-      {"mipgen",
-       "TEXRAM mipmap generator (000 §12, Fig. 14): 2x2 box levels from a texel stream, bank "
-       "writes",
-       {}},
       {"trilinear",
        "TEXRAM trilinear unit (000 §2, §5, §6): 8-bank mipmap, border modes, texel "
        "configurations, eq. 5",
@@ -107,7 +102,6 @@ std::unique_ptr<Block> make_block(const std::string& name_or_alias, const BlockO
     if (e.info().name == name) return e.make(options);
   }
   if (name == "ccc") return std::make_unique<CccDecoderBlock>(options.seed);
-  if (name == "mipgen") return std::make_unique<MipgenBlock>(options);
   if (name == "trilinear") return std::make_unique<TrilinearBlock>(options);
   if (name == "footprint") return std::make_unique<FootprintBlock>(options);
   if (name == "coord-gen") return std::make_unique<CoordGenBlock>(options.seed);
