@@ -48,9 +48,6 @@ class MipgenBlock : public DescribedBlockOf<MipgenBlock> {
              Coverage& coverage) const override;
   std::string repro_options() const override;
 
-  // The format of the setup's configuration item.
-  const texram::MipgenConfig& first_format() const { return first_; }
-
  private:
   // `f` with the parts the options fix.
   texram::MipgenConfig fixed(texram::MipgenConfig f) const;
