@@ -287,4 +287,19 @@ tmu_mutant(footprint_setup unreset FILE footprint/tmu_footprint_setup.sv EXPECT 
   TO ""
   WHY "the seven stages' valids keep their initial values through reset (random plans leave)")
 
+# TEXRAM mipmap generator (000 §12, Fig. 14).
+tmu_block(mipgen)
+tmu_mutant(mipgen round FILE texram/tmu_mipgen.sv
+  FROM "sum + SumW'(2)" TO "sum + SumW'(1)"
+  WHY "the box rule adds a quarter instead of half of 4 before dropping two bits (wrong on every tie)")
+tmu_mutant(mipgen above FILE texram/tmu_mipgen.sv
+  FROM "pair = PairW'(val_q) + PairW'(above_q);" TO "pair = PairW'(val_q) + PairW'(val_q);"
+  WHY "interlaced field 2 pairs each texel with itself instead of the texel above (adder 1402, Fig. 14(a))")
+tmu_mutant(mipgen fifo FILE texram/tmu_mipgen.sv
+  FROM ".addr_i  (x_q[FifoAddrW:1])," TO ".addr_i  (x_q[FifoAddrW-1:0]),"
+  WHY "the line FIFOs are addressed by column, not column pair: right until a line fills its FIFO (a 1024-texel line at stage 0), then its second half overwrites its first")
+tmu_mutant(mipgen unreset FILE texram/tmu_mipgen.sv EXPECT x-leak
+  FROM "      src_x_q <= '0;\n      src_y_q <= '0;\n" TO ""
+  WHY "the source position starts where its flops happen to be (the first frame's texels are written elsewhere)")
+
 tmu_write_block_tables()

@@ -5,7 +5,9 @@
 // when at most one write is pending (a registered ready: the pending write may be the one
 // leaving at this edge), queues the item's writes and sends one write per clock.
 //
-// The configuration (cfg_*) is quasi-static: it is read when the first item is accepted.
+// The configuration (cfg_*) is the frame format: a driver changes it only between frames, so
+// it is read at the first texel of every frame (a new format starts a new stream; every
+// partial sum of a frame completes within it).
 #pragma once
 
 #include <cstddef>
@@ -14,46 +16,36 @@
 #include <systemc>
 #include <vector>
 
+#include "blocks/mipgen/mipgen_ports.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/sc_ports.hpp"
 #include "texram/mipgen_stream.hpp"
 
 namespace tmu::hls {
 
 namespace fmts = tmu::formats;
 
-SC_MODULE(MipgenSc) {
-  template <int W>
-  using uint_t = sc_dt::sc_uint<W>;
+class MipgenSc : public sc_core::sc_module {
+ public:
+  TMU_SC_PORTS(mipgen)
 
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  sc_core::sc_in<uint_t<fmts::kMipLog2.width()>> cfg_log2_w_i{"cfg_log2_w_i"};
-  sc_core::sc_in<uint_t<fmts::kMipLog2.width()>> cfg_log2_h_i{"cfg_log2_h_i"};
-  sc_core::sc_in<bool> cfg_interlaced_i{"cfg_interlaced_i"};
-  sc_core::sc_in<bool> cfg_four_planes_i{"cfg_four_planes_i"};
-  sc_core::sc_in<uint_t<fmts::kBytePlane.width()>> cfg_plane_i{"cfg_plane_i"};
-
-  sc_core::sc_in<bool> in_valid_i{"in_valid_i"};
-  sc_core::sc_out<bool> in_ready_o{"in_ready_o"};
-  sc_core::sc_in<uint_t<fmts::kChannel.width()>> in_texel_i{"in_texel_i"};
-  sc_core::sc_in<uint_t<fmts::kChannel.width()>> in_above_i{"in_above_i"};
-
-  sc_core::sc_out<bool> wr_valid_o{"wr_valid_o"};
-  sc_core::sc_in<bool> wr_ready_i{"wr_ready_i"};
-  sc_core::sc_out<uint_t<fmts::kMipLevel.width()>> wr_level_o{"wr_level_o"};
-  sc_core::sc_out<uint_t<fmts::kMipCoord.width()>> wr_x_o{"wr_x_o"};
-  sc_core::sc_out<uint_t<fmts::kMipCoord.width()>> wr_y_o{"wr_y_o"};
-  sc_core::sc_out<uint_t<fmts::kChannel.width()>> wr_value_o{"wr_value_o"};
-  sc_core::sc_out<uint_t<fmts::kBank.width()>> wr_bank_o{"wr_bank_o"};
-  sc_core::sc_out<uint_t<fmts::kBankAddr.width()>> wr_addr_o{"wr_addr_o"};
-
-  SC_CTOR(MipgenSc) {
+  SC_HAS_PROCESS(MipgenSc);
+  explicit MipgenSc(sc_core::sc_module_name name) : sc_core::sc_module(name) {
     SC_CTHREAD(run, clk_i.pos());
     reset_signal_is(rst_ni, false);
   }
 
  private:
+  texram::MipgenConfig format() const {
+    texram::MipgenConfig cfg;
+    cfg.log2_w = static_cast<int>(cfg_log2_w_i.read());
+    cfg.log2_h = static_cast<int>(cfg_log2_h_i.read());
+    cfg.interlaced = cfg_interlaced_i.read() != 0;
+    cfg.planes = cfg_four_planes_i.read() != 0 ? fmts::kPlanes : 1;
+    cfg.plane = static_cast<int>(cfg_plane_i.read());
+    return cfg;
+  }
+
   void present(const texram::CellWrite* w) {
     wr_valid_o.write(w != nullptr);
     wr_level_o.write(w ? static_cast<unsigned>(w->level) : 0u);
@@ -84,14 +76,10 @@ SC_MODULE(MipgenSc) {
         head = 0;
       }
       if (in_ready_o.read() && in_valid_i.read()) {
-        if (!stream) {
-          texram::MipgenConfig cfg;
-          cfg.log2_w = static_cast<int>(cfg_log2_w_i.read());
-          cfg.log2_h = static_cast<int>(cfg_log2_h_i.read());
-          cfg.interlaced = cfg_interlaced_i.read();
-          cfg.planes = cfg_four_planes_i.read() ? fmts::kPlanes : 1;
-          cfg.plane = static_cast<int>(cfg_plane_i.read());
-          stream.emplace(cfg);
+        // A frame's first texel takes the format on cfg_* (a new one starts a new stream).
+        if (!stream || stream->frame_start()) {
+          const texram::MipgenConfig cfg = format();
+          if (!stream || !(stream->config() == cfg)) stream.emplace(cfg);
         }
         stream->step(
             {static_cast<uint8_t>(in_texel_i.read()), static_cast<uint8_t>(in_above_i.read())},

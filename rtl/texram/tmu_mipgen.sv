@@ -8,7 +8,7 @@
 /// (lines 0, 2, ...) then field 2 (lines 1, 3, ...). A field-2 item carries in_above_i, the
 /// level-0 texel above it (the chip reads that line back from its banks into the shift
 /// registers 826); elsewhere in_above_i is ignored. A one-line frame is never interlaced.
-/// After a frame's last texel the next item starts a new frame of the same format.
+/// After a frame's last texel the next item starts a new frame, of the format then on cfg_*.
 ///
 /// Output, per input item: its level-0 write(s), then each higher-level texel the item
 /// completes, ascending level. A texel of a level less than 2 texels wide (high) is written
@@ -31,7 +31,8 @@
 /// many cycles as it makes writes: one for most items, 4/3 on average for a square texture
 /// (more for the replicas of one-texel-wide levels), the frame's last item one per level.
 ///
-/// Configuration (cfg_*) is quasi-static: hold it from before reset for the whole run.
+/// Configuration (cfg_*) is quasi-static: change it only between frames, while idle (the
+/// source position is then back at (0, 0), and every partial sum completes within its frame).
 ///
 /// Example: 2 x 2 texels a b / c d, not interlaced, one plane. a: write (level 0, x 0, y 0),
 /// a waits in hold_q[0]; b: write (0, 1, 0), the pair a + b waits in the level-0 line FIFO;

@@ -8,7 +8,6 @@
 #include "blocks/cube_map_block.hpp"
 #include "blocks/deflect_block.hpp"
 #include "blocks/material_block.hpp"
-#include "blocks/mipgen_block.hpp"
 #include "blocks/normal_encoder_block.hpp"
 #include "blocks/specular_combine_block.hpp"
 
@@ -48,10 +47,6 @@ std::vector<BlockInfo> block_list() {
   for (const Entry& e : kEntries) out.push_back(e.info());
   std::vector<BlockInfo> old = {
       {"ccc", "CCC decoder (000 §3, Fig. 5): block word + texel address -> RGB888", {}},
-      {"mipgen",
-       "TEXRAM mipmap generator (000 §12, Fig. 14): 2x2 box levels from a texel stream, bank "
-       "writes",
-       {}},
       {"coord-gen",
        "Shading/environment-map coordinates (001 §5, eq. 17-22): seven tables -> uN, vN, "
        "uR, vR, wR",
@@ -97,7 +92,6 @@ std::unique_ptr<Block> make_block(const std::string& name_or_alias, const BlockO
     if (e.info().name == name) return e.make(options);
   }
   if (name == "ccc") return std::make_unique<CccDecoderBlock>(options.seed);
-  if (name == "mipgen") return std::make_unique<MipgenBlock>(options);
   if (name == "coord-gen") return std::make_unique<CoordGenBlock>(options.seed);
   if (name == "cube-map") return std::make_unique<CubeMapBlock>(options);
   if (name == "deflect") return std::make_unique<DeflectBlock>(options);

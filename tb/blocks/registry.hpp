@@ -17,7 +17,7 @@ struct BlockOptions {
   uint64_t seed = 1;
   std::string texture;            // ccc-bilinear: a .ccc file instead of a random texture
   std::optional<bool> lookahead;  // ccc_cache_bilinear: neighbour prefetch (unset: drawn)
-  // mipgen: the frame format; -1 draws it from the seed.
+  // mipgen: parts of every frame format; -1 draws them from the seed.
   int mip_log2_w = -1;      // log2 of the width, 0..10
   int mip_log2_h = -1;      // log2 of the height, 0..10
   int mip_interlaced = -1;  // 0 or 1

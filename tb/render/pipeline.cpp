@@ -7,7 +7,7 @@
 
 #include "blocks/ccc_cache_bilinear/ccc_cache_bilinear_block.hpp"
 #include "blocks/footprint/footprint_block.hpp"
-#include "blocks/mipgen_block.hpp"
+#include "blocks/mipgen/mipgen_block.hpp"
 #include "blocks/trilinear/trilinear_block.hpp"
 #include "ccc/ccc_cache_bilinear.hpp"
 #include "ccc/ccc_encoder.hpp"
@@ -114,14 +114,14 @@ Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level
           const texram::Geometry& g = tex.geometry;
           texram::TexramTexture generated{tex.kind, g, {}, tex.clut};
           for (auto& b : generated.banks) b.assign(g.bank_cells(), 0);
+          const auto block = std::make_shared<tb::MipgenBlock>();
           for (int p = 0; p < g.planes(); ++p) {
             const texram::MipgenConfig cfg{g.log2_width(), g.log2_height(), false, g.planes(), p};
             UnitRun run;
             run.kind = "mipgen";
             run.material = mat.name + (g.planes() > 1 ? fmt::format(".plane{}", p) : "");
-            run.engine = [cfg](const std::string& l) { return tb::make_mipgen_engine(l, cfg); };
-            run.ports = tb::MipgenBlock(tb::BlockOptions{}).ports();
-            run.items = tb::mipgen_frame_items(level0_plane(tex, p), false);
+            attach(run, block);
+            run.items = tb::mipgen_items(cfg, level0_plane(tex, p));
             run_unit(run, level, {});
             for (const tb::Txn& w : run.result.outputs) {
               const texram::CellWrite cw = tb::mipgen_txn_write(w);

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "blocks/mipgen_block.hpp"
+#include "blocks/mipgen/mipgen_block.hpp"
 #include "common/error.hpp"
 #include "common/image.hpp"
 #include "formats/formats.hpp"
@@ -30,12 +30,13 @@ constexpr std::array<const char*, 3> kPlaneNames{"R", "G", "B"};
 
 uint8_t channel(const Rgb8& c, int plane) { return plane == 0 ? c.r : plane == 1 ? c.g : c.b; }
 
-// The generator's writes for one plane through `engine`; prints the run.
-std::vector<tb::Txn> run_engine(const std::string& engine, const texram::MipgenConfig& cfg,
-                                const std::vector<tb::Txn>& items, const std::string& what) {
-  const tb::RunResult r = tb::make_mipgen_engine(engine, cfg)->run(items, tb::RunOptions{});
+// The generator's writes for one plane through `engine`: `items` are the plane's format and
+// its `texels` texels; prints the run.
+std::vector<tb::Txn> run_engine(const std::string& engine, const std::vector<tb::Txn>& items,
+                                size_t texels, const std::string& what) {
+  const tb::RunResult r = tb::MipgenBlock().engine(engine)->run(items, tb::RunOptions{});
   if (!r.error.empty()) throw std::runtime_error(engine + " mipgen run failed: " + r.error);
-  fmt::print("  {:<6} {}: {} texels -> {} writes in {:.3f} s{}\n", engine, what, items.size(),
+  fmt::print("  {:<6} {}: {} texels -> {} writes in {:.3f} s{}\n", engine, what, texels,
              r.outputs.size(), r.seconds, r.cycles ? fmt::format(", {} cycles", r.cycles) : "");
   return r.outputs;
 }
@@ -125,12 +126,13 @@ void add_mipgen_command(CLI::App& app, ExitCode& exit_code) {
         level0.texels[i] = args->luminance ? texram::luma(c) : channel(c, p);
       }
       const texram::MipgenConfig cfg{lw, lh, args->interlaced, planes, p};
-      const std::vector<tb::Txn> items = tb::mipgen_frame_items(level0, args->interlaced);
+      const std::vector<tb::Txn> items = tb::mipgen_items(cfg, level0);
       const std::string what =
           grey ? "plane" : fmt::format("plane {}", kPlaneNames[static_cast<size_t>(p)]);
-      const std::vector<tb::Txn> writes = run_engine(args->engine, cfg, items, what);
+      const size_t texels = level0.texels.size();
+      const std::vector<tb::Txn> writes = run_engine(args->engine, items, texels, what);
       if (!args->check.empty()) {
-        const std::vector<tb::Txn> ref = run_engine(args->check, cfg, items, what);
+        const std::vector<tb::Txn> ref = run_engine(args->check, items, texels, what);
         if (!same_writes(ref, writes, args->check, args->engine, what)) {
           match = false;
           continue;

@@ -87,13 +87,14 @@ std::shared_ptr<CosimArgs> add_cosim_options(CLI::App& app) {
                   "ccc_cache_bilinear: a texture (.ccc) instead of random ones")
       ->check(CLI::ExistingFile);
   cmd->add_option("--mip-log2-w", args->block_options.mip_log2_w,
-                  "mipgen: log2 frame width 0..10 (default: from the seed)")
+                  "mipgen: log2 width 0..10 of every frame format (default: drawn per format)")
       ->check(CLI::Range(0, 10));
   cmd->add_option("--mip-log2-h", args->block_options.mip_log2_h,
-                  "mipgen: log2 frame height 0..10 (default: from the seed)")
+                  "mipgen: log2 height 0..10 of every frame format (default: drawn per format)")
       ->check(CLI::Range(0, 10));
-  cmd->add_option("--mip-interlaced", args->block_options.mip_interlaced,
-                  "mipgen: 0 or 1 (default: from the seed)")
+  cmd->add_option(
+         "--mip-interlaced", args->block_options.mip_interlaced,
+         "mipgen: every frame interlaced (1) or progressive (0) (default: drawn per format)")
       ->check(CLI::Range(0, 1));
   cmd->add_option("--map-latency", args->block_options.dfl_map_latency,
                   "deflect: cycles from a map block request to its response")
