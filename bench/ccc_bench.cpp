@@ -6,7 +6,7 @@
 #include <random>
 
 #include "bench/ratio_reporter.hpp"
-#include "blocks/ccc_decoder_block.hpp"
+#include "blocks/ccc_decoder/ccc_decoder_block.hpp"
 #include "ccc/ccc_decoder.hpp"
 #include "ccc/ccc_encoder.hpp"
 #include "common/test_patterns.hpp"
@@ -19,7 +19,7 @@ const std::vector<tb::Txn>& decoder_items(size_t texels) {
   static std::map<size_t, std::vector<tb::Txn>> cache;
   auto& items = cache[texels];
   if (items.empty()) {
-    const tb::CccDecoderBlock block(1);
+    const tb::CccDecoderBlock block;
     items = block.setup_items();
     std::mt19937_64 rng(7);
     for (size_t i = 0; i < texels; ++i) {
@@ -32,7 +32,7 @@ const std::vector<tb::Txn>& decoder_items(size_t texels) {
 void decode(benchmark::State& state, const std::string& level) {
   const auto texels = static_cast<size_t>(state.range(0));
   const auto& items = decoder_items(texels);
-  const auto engine = tb::CccDecoderBlock(1).engine(level);
+  const auto engine = tb::CccDecoderBlock().engine(level);
   for (auto _ : state) {
     const tb::RunResult r = engine->run(items, tb::RunOptions{});
     if (!r.error.empty() || r.outputs.size() != texels) state.SkipWithError("run failed");

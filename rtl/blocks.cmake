@@ -314,4 +314,43 @@ tmu_mutant(mipgen unreset FILE texram/tmu_mipgen.sv EXPECT x-leak
   FROM "      src_x_q <= '0;\n      src_y_q <= '0;\n" TO ""
   WHY "the source position starts where its flops happen to be (the first frame's texels are written elsewhere)")
 
+# CCC decoder (000 §3, Fig. 5).
+tmu_block(ccc_decoder)
+tmu_mutant(ccc_decoder decision FILE ccc/tmu_ccc_decoder.sv
+  FROM "decision_bits[req_texel_i]" TO "decision_bits[req_texel_i & 4'he]"
+  WHY "odd texels read the even texel's decision bit (colour a for b on half the texels)")
+tmu_mutant(ccc_decoder stall FILE ccc/tmu_ccc_decoder.sv
+  FROM "if (req_fire) rgb_q" TO "if (req_valid_i) rgb_q"
+  WHY "the output register reloads while the output is stalled (a held output changes: the output-stable assertion)")
+# The valid is the decoder's only reset flop and one bit: with its reset simply removed it starts
+# at 0 in both runs of the X check (seeds 11 and 22), which then cannot tell. Its reset value
+# taken from the data register, 24 bits without reset, leaks on every seed.
+tmu_mutant(ccc_decoder unreset FILE ccc/tmu_ccc_decoder.sv EXPECT x-leak
+  FROM "      valid_q <= 1'b0;\n" TO "      valid_q <= |rgb_q;\n"
+  WHY "the output valid resets to a value of the unreset data register (a random colour leaves before any request)")
+
+# Specular combine (000 §7 eq. 6, §8 eq. 7).
+tmu_block(specular_combine)
+tmu_mutant(specular_combine wrap FILE texram/tmu_specular_combine.sv
+  FROM "sum[ChW] ? '1 : sum[ChW-1:0]" TO "sum[ChW-1:0]"
+  WHY "the sum wraps instead of saturating at 255 (a channel darkens: the no-darkening assertion)")
+tmu_mutant(specular_combine alpha FILE texram/tmu_specular_combine.sv
+  FROM "s1_alpha_q   <= in_diffuse_i" TO "s1_alpha_q   <= in_specular_i"
+  WHY "C's alpha is E's instead of D's")
+tmu_mutant(specular_combine unreset FILE texram/tmu_specular_combine.sv EXPECT x-leak
+  FROM "      valid_q <= '0;\n" TO ""
+  WHY "the two stage valids keep their initial values through reset (random colours leave)")
+
+# Cube environment map addressing (000 §7).
+tmu_block(cube_address)
+tmu_mutant(cube_address tie FILE deflect/tmu_cube_address.sv
+  FROM "s1_a_q >= s1_b_q &&" TO "s1_a_q > s1_b_q &&"
+  WHY "a tie of |x| and |y| goes to y (the cube's x-y edges and corners change face)")
+tmu_mutant(cube_address sign FILE deflect/tmu_cube_address.sv
+  FROM "{!s1_sx_q, s1_a_q, !s1_sy_q, s1_b_q};  // -Z" TO "{s1_sx_q, s1_a_q, !s1_sy_q, s1_b_q};  // -Z"
+  WHY "the -Z face's sc = -x loses its sign (u mirrored on that face only)")
+tmu_mutant(cube_address unreset FILE deflect/tmu_cube_address.sv EXPECT x-leak
+  FROM "      valid_q <= '0;\n" TO ""
+  WHY "the seven stage valids keep their initial values through reset (random addresses leave)")
+
 tmu_write_block_tables()

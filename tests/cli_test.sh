@@ -87,20 +87,22 @@ expect "a failed decode onto an existing file" 2 "bad_magic.ccc" -- "$texsim" cc
 expect "unwritable output directory" 2 "no_such_dir/x.ccc" -- "$texsim" ccc encode img.png no_such_dir/x.ccc
 expect "unknown block lists the blocks" 2 "unknown block 'nope' \(blocks: " -- "$texsim" cosim nope
 expect "bad engine" 2 "engine" -- "$texsim" ccc decode img.ccc x.png --engine fast
-expect "out-of-range stall probability" 2 "in-idle" -- "$texsim" cosim ccc --in-idle 2
+expect "out-of-range stall probability" 2 "in-idle" -- "$texsim" cosim ccc_decoder --in-idle 2
 
 # Co-simulation verdicts and exit codes.
-expect "cosim ccc matches" 0 "MATCH: all .* transactions bit-exact, golden = hls = rtl" -- \
-  "$texsim" cosim ccc --count 3000 --seed 5
-expect "cosim with an injected fault fails" 1 "reproduce: texsim cosim ccc --seed 5" -- \
-  "$texsim" cosim ccc --count 3000 --seed 5 --inject-fault 100 --wave-dir waves
-[[ -s waves/ccc_mismatch.fst && -s waves/ccc_mismatch.gtkw ]] && pass "mismatch waveform written" \
+expect "cosim ccc_decoder matches" 0 "MATCH: all .* transactions bit-exact, golden = hls = rtl" -- \
+  "$texsim" cosim ccc_decoder --count 3000 --seed 5
+expect "a block's old name runs the block" 0 "cosim ccc_decoder: seed 5" -- \
+  "$texsim" cosim ccc --count 300 --seed 5
+expect "cosim with an injected fault fails" 1 "reproduce: texsim cosim ccc_decoder --seed 5" -- \
+  "$texsim" cosim ccc_decoder --count 3000 --seed 5 --inject-fault 100 --wave-dir waves
+[[ -s waves/ccc_decoder_mismatch.fst && -s waves/ccc_decoder_mismatch.gtkw ]] && pass "mismatch waveform written" \
   || fail "no mismatch waveform"
-run "save a vector file" -- "$texsim" cosim ccc --count 500 --seed 8 --save-vectors vec.csv
+run "save a vector file" -- "$texsim" cosim ccc_decoder --count 500 --seed 8 --save-vectors vec.csv
 [[ -s vec.csv ]] && pass "vector file written" || fail "no vec.csv"
-expect "replay a saved vector file" 0 "MATCH" -- "$texsim" cosim ccc --vectors vec.csv
+expect "replay a saved vector file" 0 "MATCH" -- "$texsim" cosim ccc_decoder --vectors vec.csv
 printf 'op,block\n0,0x1ffffffff\n' >bad.csv
-expect "bad vector file names line and field" 2 "bad.csv: line 2: block" -- "$texsim" cosim ccc --vectors bad.csv
+expect "bad vector file names line and field" 2 "bad.csv: line 2: block" -- "$texsim" cosim ccc_decoder --vectors bad.csv
 
 # The TEXRAM unit: sample request files, mipmap generation.
 run "pattern: a 64x32 texture" -- "$texsim" pattern smooth tex.png --width 64 --height 32

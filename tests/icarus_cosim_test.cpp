@@ -11,8 +11,10 @@
 #include <string>
 
 #include "blocks/registry.hpp"
+#include "blocks/specular_combine/specular_combine_block.hpp"
 #include "harness/cosim.hpp"
 #include "icarus/icarus_engine.hpp"
+#include "icarus/testbench.hpp"
 #include "tests/cosim_test_support.hpp"
 
 namespace tmu::tb {
@@ -84,30 +86,38 @@ TEST_P(IcarusCosimTest, MatchesGoldenBitForBit) {
 
 INSTANTIATE_TEST_SUITE_P(
     Blocks, IcarusCosimTest,
-    ::testing::Values(Case{"specular_combine", "specular-combine", 3000, {}},
+    ::testing::Values(Case{"specular_combine", "specular_combine", 3000, {}},
                       Case{"perlin", "perlin", 1000, {}},
                       Case{"turbulence_pipelined", "turbulence", 300, {}},
                       Case{"turbulence_shared", "turbulence", 300, shared_fractal()},
-                      Case{"ccc", "ccc", 3000, {}},
+                      Case{"ccc_decoder", "ccc_decoder", 3000, {}},
                       Case{"normal_encoder", "normal-encoder", 2000, {}},
                       // widths that are not verilated: the testbench's parameters
                       Case{"normal_encoder_8_3_6", "normal-encoder", 1000, encoder(8, 3, 6)},
-                      Case{"cube_map", "cube-map", 2000, {}}),
+                      Case{"cube_address", "cube_address", 2000, {}}),
     [](const ::testing::TestParamInfo<Case>& test) { return test.param.name; });
 
+// The specular combine under Icarus as its icarus level runs it (the testbench generated from
+// its ports), with one piece of text of its RTL replaced.
+IcarusModel specular_combine_mutant(IcarusMutation mutation) {
+  IcarusModel m{"specular_combine_tb", "tmu_specular_combine"};
+  m.text = icarus_testbench(desc::specular_combine::table(), m.top, m.testbench);
+  m.mutation = std::move(mutation);
+  return m;
+}
+
 // The comparison has teeth: the specular combine's sum wraps instead of saturating at 255
-// (the Verilator mutant Vtmu_specular_combine_mutant_wrap's change, here in the Icarus copy).
+// (rtl/blocks.cmake's mutant specular_combine/wrap, here in the Icarus copy).
 TEST(IcarusMutantTest, SpecularCombineWrapIsCaught) {
-  const auto block = make_block("specular-combine", {});
-  if (const std::string why = icarus_missing(*block); !why.empty()) GTEST_SKIP() << why;
-  IcarusModel mutant{"specular_combine_tb", "tmu_specular_combine"};
-  mutant.mutation = IcarusMutation{"texram/tmu_specular_combine.sv", "sum[ChW] ? '1 : sum[ChW-1:0]",
-                                   "sum[ChW-1:0]"};
+  const SpecularCombineBlock block;
+  if (const std::string why = icarus_missing(block); !why.empty()) GTEST_SKIP() << why;
+  const IcarusModel mutant = specular_combine_mutant(
+      {"texram/tmu_specular_combine.sv", "sum[ChW] ? '1 : sum[ChW-1:0]", "sum[ChW-1:0]"});
   std::string log;
   const CosimResult r =
-      run_icarus(*block, 2500, 7, log, [&](const std::string& level) -> std::unique_ptr<Engine> {
+      run_icarus(block, 2500, 7, log, [&](const std::string& level) -> std::unique_ptr<Engine> {
         if (level != "icarus") return nullptr;
-        return make_icarus_engine("icarus", mutant, block->inputs(), block->outputs());
+        return make_icarus_engine("icarus", mutant, block.inputs(), block.outputs());
       });
   EXPECT_FALSE(r.pass);
   EXPECT_EQ(r.failing_engine, "icarus");
@@ -120,12 +130,12 @@ TEST(IcarusMutantTest, SpecularCombineWrapIsCaught) {
 
 // A mutation whose text is gone fails loudly rather than running the unmutated block.
 TEST(IcarusMutantTest, StaleMutationIsAnError) {
-  const auto block = make_block("specular-combine", {});
-  if (const std::string why = icarus_missing(*block); !why.empty()) GTEST_SKIP() << why;
-  IcarusModel mutant{"specular_combine_tb", "tmu_specular_combine"};
-  mutant.mutation = IcarusMutation{"texram/tmu_specular_combine.sv", "no such text", "x"};
+  const SpecularCombineBlock block;
+  if (const std::string why = icarus_missing(block); !why.empty()) GTEST_SKIP() << why;
+  const IcarusModel mutant =
+      specular_combine_mutant({"texram/tmu_specular_combine.sv", "no such text", "x"});
   const RunResult r =
-      make_icarus_engine("icarus", mutant, block->inputs(), block->outputs())->run({}, {});
+      make_icarus_engine("icarus", mutant, block.inputs(), block.outputs())->run({}, {});
   EXPECT_NE(r.error.find("did not apply"), std::string::npos) << r.error;
 }
 

@@ -6,8 +6,10 @@
 
 #include <systemc>
 
+#include "blocks/ccc_decoder/ccc_decoder_ports.hpp"
 #include "ccc/ccc_decoder.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/sc_ports.hpp"
 #include "hls/common/small_fifo.hpp"
 
 namespace tmu::hls {
@@ -15,25 +17,7 @@ namespace tmu::hls {
 namespace fmts = tmu::formats;
 
 SC_MODULE(CccDecoderSc) {
-  template <int W>
-  using uint_t = sc_dt::sc_uint<W>;
-
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  sc_core::sc_in<bool> clut_valid_i{"clut_valid_i"};
-  sc_core::sc_out<bool> clut_ready_o{"clut_ready_o"};
-  sc_core::sc_in<uint_t<fmts::kClutIndex.width()>> clut_addr_i{"clut_addr_i"};
-  sc_core::sc_in<uint_t<fmts::kRgb888.width()>> clut_rgb_i{"clut_rgb_i"};
-
-  sc_core::sc_in<bool> req_valid_i{"req_valid_i"};
-  sc_core::sc_out<bool> req_ready_o{"req_ready_o"};
-  sc_core::sc_in<uint_t<fmts::kCccBlock.width()>> req_block_i{"req_block_i"};
-  sc_core::sc_in<uint_t<fmts::kCccTexel.width()>> req_texel_i{"req_texel_i"};
-
-  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
-  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
-  sc_core::sc_out<uint_t<fmts::kRgb888.width()>> out_rgb_o{"out_rgb_o"};
+  TMU_SC_PORTS(ccc_decoder)
 
   SC_CTOR(CccDecoderSc) {
     SC_CTHREAD(run, clk_i.pos());

@@ -13,8 +13,10 @@
 #include <stdexcept>
 #include <systemc>
 
+#include "blocks/cube_address/cube_address_ports.hpp"
 #include "deflect/cube_map.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/sc_ports.hpp"
 #include "hls/common/small_fifo.hpp"
 
 namespace tmu::hls {
@@ -23,30 +25,7 @@ namespace fmts = tmu::formats;
 
 class CubeAddressSc : public sc_core::sc_module {
  public:
-  template <int W>
-  using uint_t = sc_dt::sc_uint<W>;
-  template <int W>
-  using int_t = sc_dt::sc_int<W>;
-  static constexpr int kCompW = fmts::kUnitComp.width();
-  static constexpr int kLog2W = fmts::kMipLog2.width();
-  static constexpr int kFaceW = fmts::kCubeFace.width();
-  static constexpr int kCoordW = fmts::kTexCoord.width();
-
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  sc_core::sc_in<bool> in_valid_i{"in_valid_i"};
-  sc_core::sc_out<bool> in_ready_o{"in_ready_o"};
-  sc_core::sc_in<int_t<kCompW>> in_x_i{"in_x_i"};
-  sc_core::sc_in<int_t<kCompW>> in_y_i{"in_y_i"};
-  sc_core::sc_in<int_t<kCompW>> in_z_i{"in_z_i"};
-  sc_core::sc_in<uint_t<kLog2W>> in_face_log2_i{"in_face_log2_i"};
-
-  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
-  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
-  sc_core::sc_out<uint_t<kFaceW>> out_face_o{"out_face_o"};
-  sc_core::sc_out<int_t<kCoordW>> out_u_o{"out_u_o"};
-  sc_core::sc_out<int_t<kCoordW>> out_v_o{"out_v_o"};
+  TMU_SC_PORTS(cube_address)
 
   SC_HAS_PROCESS(CubeAddressSc);
   explicit CubeAddressSc(sc_core::sc_module_name name, int seed_bits = 7)
@@ -72,17 +51,25 @@ class CubeAddressSc : public sc_core::sc_module {
       in_ready_o.write(out.size() <= 1);  // room for one more whatever the output does
       out_valid_o.write(!out.empty());
       out_face_o.write(out.empty() ? 0u : out.front().face);
-      out_u_o.write(out.empty() ? 0 : out.front().u);
-      out_v_o.write(out.empty() ? 0 : out.front().v);
+      out_u_o.write(out.empty() ? 0u : coord_bits(out.front().u));
+      out_v_o.write(out.empty() ? 0u : coord_bits(out.front().v));
       wait();
       // Everything below sees the values from before this edge.
       if (out_valid_o.read() && out_ready_i.read()) out.pop();
       if (in_ready_o.read() && in_valid_i.read()) {
-        out.push(deflect::cube_address(
-            in_x_i.read().to_int(), in_y_i.read().to_int(), in_z_i.read().to_int(),
-            static_cast<int>(in_face_log2_i.read().to_uint()), seed_bits_));
+        const fx::Format c = fmts::kUnitComp;
+        out.push(deflect::cube_address(static_cast<int32_t>(signed_value(in_x_i.read(), c)),
+                                       static_cast<int32_t>(signed_value(in_y_i.read(), c)),
+                                       static_cast<int32_t>(signed_value(in_z_i.read(), c)),
+                                       static_cast<int>(in_face_log2_i.read().to_uint()),
+                                       seed_bits_));
       }
     }
+  }
+
+  // A TexCoord's port bits: its two's complement pattern.
+  static uint64_t coord_bits(int32_t v) {
+    return static_cast<uint64_t>(int64_t{v}) & ((uint64_t{1} << fmts::kTexCoord.width()) - 1);
   }
 
   int seed_bits_;

@@ -9,7 +9,8 @@
 #include <cstdint>
 #include <systemc>
 
-#include "formats/formats.hpp"
+#include "blocks/specular_combine/specular_combine_ports.hpp"
+#include "hls/common/sc_ports.hpp"
 #include "hls/common/small_fifo.hpp"
 #include "texram/specular_combine.hpp"
 
@@ -17,21 +18,7 @@ namespace tmu::hls {
 
 class SpecularCombineSc : public sc_core::sc_module {
  public:
-  static constexpr int kRgbaW = tmu::formats::kRgba8888.width();
-  using rgba_t = sc_dt::sc_uint<kRgbaW>;
-
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  sc_core::sc_in<bool> in_valid_i{"in_valid_i"};
-  sc_core::sc_out<bool> in_ready_o{"in_ready_o"};
-  sc_core::sc_in<rgba_t> in_diffuse_i{"in_diffuse_i"};
-  sc_core::sc_in<rgba_t> in_specular_i{"in_specular_i"};
-  sc_core::sc_in<rgba_t> in_reflectance_i{"in_reflectance_i"};
-
-  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
-  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
-  sc_core::sc_out<rgba_t> out_colour_o{"out_colour_o"};
+  TMU_SC_PORTS(specular_combine)
 
   SC_HAS_PROCESS(SpecularCombineSc);
   explicit SpecularCombineSc(sc_core::sc_module_name name) : sc_core::sc_module(name) {

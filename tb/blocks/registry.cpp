@@ -3,13 +3,10 @@
 #include <block_list.hpp>
 #include <stdexcept>
 
-#include "blocks/ccc_decoder_block.hpp"
 #include "blocks/coord_gen_block.hpp"
-#include "blocks/cube_map_block.hpp"
 #include "blocks/deflect_block.hpp"
 #include "blocks/material_block.hpp"
 #include "blocks/normal_encoder_block.hpp"
-#include "blocks/specular_combine_block.hpp"
 
 namespace tmu::tb {
 
@@ -46,14 +43,9 @@ std::vector<BlockInfo> block_list() {
   std::vector<BlockInfo> out;
   for (const Entry& e : kEntries) out.push_back(e.info());
   std::vector<BlockInfo> old = {
-      {"ccc", "CCC decoder (000 §3, Fig. 5): block word + texel address -> RGB888", {}},
       {"coord-gen",
        "Shading/environment-map coordinates (001 §5, eq. 17-22): seven tables -> uN, vN, "
        "uR, vR, wR",
-       {}},
-      {"cube-map",
-       "Cube environment map addressing (000 §7): reflection vector -> face and texel "
-       "coordinate, dividing by the largest component (the normal encoder's divider)",
        {}},
       {"deflect",
        "Bump deflection unit (001 §4.4, §6.2): phi_D - theta_N, first-octant s2s map "
@@ -62,10 +54,6 @@ std::vector<BlockInfo> block_list() {
       {"normal-encoder",
        "Normal encoder (001 §4.1, eq. 12-16): (x, y, z) -> (phi, theta) by two seeded "
        "Newton-Raphson dividers and angle tables",
-       {}},
-      {"specular-combine",
-       "Specular combine (000 §7 eq. 6, §8 eq. 7): per channel min(255, D + E R / 255), "
-       "alpha from D",
        {}},
       {"material",
        "Material unit (002 §4.2): registers and colour tables behind a write port; (u, v, "
@@ -91,12 +79,9 @@ std::unique_ptr<Block> make_block(const std::string& name_or_alias, const BlockO
   for (const Entry& e : kEntries) {
     if (e.info().name == name) return e.make(options);
   }
-  if (name == "ccc") return std::make_unique<CccDecoderBlock>(options.seed);
   if (name == "coord-gen") return std::make_unique<CoordGenBlock>(options.seed);
-  if (name == "cube-map") return std::make_unique<CubeMapBlock>(options);
   if (name == "deflect") return std::make_unique<DeflectBlock>(options);
   if (name == "normal-encoder") return std::make_unique<NormalEncoderBlock>(options);
-  if (name == "specular-combine") return std::make_unique<SpecularCombineBlock>();
   if (name == "material") return std::make_unique<MaterialBlock>(options);
   std::string known;
   for (const BlockInfo& b : block_list()) known += (known.empty() ? "" : ", ") + b.name;

@@ -7,10 +7,10 @@
 #include <memory>
 
 #include "blocks/coord_gen_block.hpp"
-#include "blocks/cube_map_block.hpp"
+#include "blocks/cube_address/cube_address_block.hpp"
 #include "blocks/deflect_block.hpp"
 #include "blocks/normal_encoder_block.hpp"
-#include "blocks/specular_combine_block.hpp"
+#include "blocks/specular_combine/specular_combine_block.hpp"
 #include "blocks/trilinear/trilinear_block.hpp"
 #include "deflect/bump_map.hpp"
 #include "deflect/coord_tables.hpp"
@@ -170,7 +170,7 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
     UnitRun cube;
     cube.kind = "cube-map";
     cube.material = mat.name;
-    attach(cube, std::make_shared<tb::CubeMapBlock>(tb::BlockOptions{}));
+    attach(cube, std::make_shared<tb::CubeAddressBlock>());
     for (const deflect::MapCoords& c : map_coords)
       cube.items.push_back(tb::cube_item(c.ur, c.vr, c.wr, face_log2));
     const std::vector<tb::Txn> address = runner.run(std::move(cube), frags);
@@ -181,9 +181,9 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
       std::vector<std::array<int32_t, 3>> uvl;
       std::vector<size_t> which, fragments;
       for (size_t k = 0; k < n; ++k) {
-        if (address[k].f[tb::kCubeFace] != face) continue;
-        uvl.push_back({static_cast<int32_t>(address[k].f[tb::kCubeU]),
-                       static_cast<int32_t>(address[k].f[tb::kCubeV]), 0});
+        if (address[k].f[tb::desc::cube_address::out_face] != face) continue;
+        uvl.push_back({static_cast<int32_t>(address[k].f[tb::desc::cube_address::out_u]),
+                       static_cast<int32_t>(address[k].f[tb::desc::cube_address::out_v]), 0});
         which.push_back(k);
         fragments.push_back(frags[k]);
       }
@@ -214,7 +214,7 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
   }
   std::vector<uint32_t> out;
   for (const tb::Txn& t : runner.run(std::move(combine), frags))
-    out.push_back(static_cast<uint32_t>(t.f[tb::kSpcColour]));
+    out.push_back(static_cast<uint32_t>(t.f[tb::desc::specular_combine::out_colour]));
   return out;
 }
 

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "blocks/material_block.hpp"
-#include "blocks/specular_combine_block.hpp"
+#include "blocks/specular_combine/specular_combine_block.hpp"
 #include "perlin/materials_ideal.hpp"
 #include "render/material_config.hpp"
 #include "texram/sampler_config.hpp"
@@ -46,7 +46,7 @@ std::vector<uint32_t> run_procedural(const ChainInput& in, std::vector<UnitRun>&
   }
   std::vector<uint32_t> out;
   for (const tb::Txn& t : run_and_keep(std::move(shade), in.level, in.frags, units, outputs_of))
-    out.push_back(static_cast<uint32_t>(t.f[tb::kSpcColour]));
+    out.push_back(static_cast<uint32_t>(t.f[tb::desc::specular_combine::out_colour]));
   return out;
 }
 

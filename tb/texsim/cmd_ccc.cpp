@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "blocks/ccc_cache_bilinear/ccc_cache_bilinear_block.hpp"
-#include "blocks/ccc_decoder_block.hpp"
+#include "blocks/ccc_decoder/ccc_decoder_block.hpp"
 #include "ccc/ccc_decoder.hpp"
 #include "ccc/ccc_encoder.hpp"
 #include "common/error.hpp"
@@ -42,7 +42,7 @@ ccc::Texture encode_file(const std::string& in, ImageRgb8* image_out) {
 
 // Decodes through `level`; prints the throughput. Returns the image.
 ImageRgb8 decode_through(const ccc::Texture& tex, const std::string& level) {
-  const auto engine = tb::CccDecoderBlock(1).engine(level);
+  const auto engine = tb::CccDecoderBlock().engine(level);
   tb::RunResult run;
   const ImageRgb8 img = tb::decode_with_engine(tex, *engine, &run);
   const double texels = static_cast<double>(img.pixels.size());

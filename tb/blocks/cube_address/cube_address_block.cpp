@@ -1,121 +1,61 @@
-#include "blocks/cube_map_block.hpp"
+#include "blocks/cube_address/cube_address_block.hpp"
 
-#include <Vtmu_cube_address.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 
 #include "deflect/cube_map.hpp"
 #include "formats/formats.hpp"
-#include "harness/hls_runner.hpp"
+#include "harness/described_engines.hpp"
+#include "harness/described_hls.hpp"
 #include "hls/deflect/cube_address_sc.hpp"
-#include "icarus/icarus_engine.hpp"
+#include "rtl_models_cube_address.hpp"
+
+TMU_DESCRIBE_SC(cube_address)
+TMU_REGISTER_BLOCK(cube_address, CubeAddressBlock,
+                   "Cube environment map addressing (000 §7): reflection vector -> face and "
+                   "texel coordinate, dividing by the largest component (the normal encoder's "
+                   "divider)",
+                   "cube-map")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
+using D = desc::cube_address;
 
 namespace {
-
-const Schema kInputs({{"x", fmts::kUnitComp},
-                      {"y", fmts::kUnitComp},
-                      {"z", fmts::kUnitComp},
-                      {"face_log2", fmts::kMipLog2}});
-const Schema kOutputs({{"face", fmts::kCubeFace}, {"u", fmts::kTexCoord}, {"v", fmts::kTexCoord}});
 
 constexpr int32_t kOne = 1 << fmts::kUnitComp.frac_bits;  // 1.0, SQ2.14
 constexpr uint64_t kCoordMask = (uint64_t{1} << fmts::kTexCoord.width()) - 1;
 constexpr std::array<const char*, 6> kFaceNames = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
 
-Txn output_of(const deflect::CubeAddress& a) {
-  Txn out;
-  out.f[kCubeFace] = a.face;
-  out.f[kCubeU] = static_cast<uint64_t>(static_cast<int64_t>(a.u)) & kCoordMask;
-  out.f[kCubeV] = static_cast<uint64_t>(static_cast<int64_t>(a.v)) & kCoordMask;
-  return out;
+int16_t cube_x(const Txn& item) { return static_cast<int16_t>(item.f[D::in_x]); }
+int16_t cube_y(const Txn& item) { return static_cast<int16_t>(item.f[D::in_y]); }
+int16_t cube_z(const Txn& item) { return static_cast<int16_t>(item.f[D::in_z]); }
+int cube_face_log2(const Txn& item) { return static_cast<int>(item.f[D::in_face_log2]); }
+
+// The divider's seed-table index for the major component (golden divide_ratio's i for
+// den = ma; 0 for ma = 0).
+uint32_t cube_seed_index(uint32_t ma, int seed_bits) {
+  if (ma == 0) return 0;
+  const uint32_t d = (ma << std::countl_zero(ma)) >> 16;
+  return (d >> (15 - seed_bits)) & ((1u << seed_bits) - 1);
 }
 
-deflect::CubeAddress golden_address(const Txn& t) {
-  return deflect::cube_address(cube_x(t), cube_y(t), cube_z(t), cube_face_log2(t),
-                               CubeMapBlock::kSeedBits);
-}
-
-class GoldenEngine : public Engine {
+class Golden : public Model {
  public:
-  std::string name() const override { return "golden"; }
-  RunResult run(const std::vector<Txn>& items, const RunOptions&) override {
-    RunResult r;
-    r.outputs.reserve(items.size());
-    const auto start = std::chrono::steady_clock::now();
-    for (const Txn& t : items) r.outputs.push_back(output_of(golden_address(t)));
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.output_cycles.assign(r.outputs.size(), 0);
-    return r;
-  }
-};
-
-// The hls module with its signals, driven by the harness's ScDriver.
-class HlsBench : public sc_core::sc_module, public ScAdapter {
- public:
-  HlsBench(sc_core::sc_module_name name, sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n)
-      : sc_module(name), dut_("dut", CubeMapBlock::kSeedBits) {
-    dut_.clk_i(clk);
-    dut_.rst_ni(rst_n);
-    dut_.in_valid_i(in_valid_);
-    dut_.in_ready_o(in_ready_);
-    dut_.in_x_i(in_x_);
-    dut_.in_y_i(in_y_);
-    dut_.in_z_i(in_z_);
-    dut_.in_face_log2_i(in_face_log2_);
-    dut_.out_valid_o(out_valid_);
-    dut_.out_ready_i(out_ready_);
-    dut_.out_face_o(out_face_);
-    dut_.out_u_o(out_u_);
-    dut_.out_v_o(out_v_);
-  }
-  void drive(const Txn* item) override {
-    in_valid_.write(item != nullptr);
-    in_x_.write(item ? cube_x(*item) : 0);
-    in_y_.write(item ? cube_y(*item) : 0);
-    in_z_.write(item ? cube_z(*item) : 0);
-    in_face_log2_.write(item ? static_cast<unsigned>(cube_face_log2(*item)) : 0u);
-  }
-  bool accepts(const Txn&) const override { return in_ready_.read(); }
-  void set_out_ready(bool ready) override { out_ready_.write(ready); }
-  bool out_valid() const override { return out_valid_.read(); }
-  Txn out() const override {
-    Txn t;
-    t.f[kCubeFace] = out_face_.read();
-    t.f[kCubeU] = static_cast<uint64_t>(out_u_.read().to_int64()) & kCoordMask;
-    t.f[kCubeV] = static_cast<uint64_t>(out_v_.read().to_int64()) & kCoordMask;
-    return t;
-  }
-
- private:
-  using Sc = hls::CubeAddressSc;
-  Sc dut_;
-  sc_core::sc_signal<bool> in_valid_{"in_valid"}, in_ready_{"in_ready"};
-  sc_core::sc_signal<Sc::int_t<Sc::kCompW>> in_x_{"in_x"}, in_y_{"in_y"}, in_z_{"in_z"};
-  sc_core::sc_signal<Sc::uint_t<Sc::kLog2W>> in_face_log2_{"in_face_log2"};
-  sc_core::sc_signal<bool> out_valid_{"out_valid"}, out_ready_{"out_ready"};
-  sc_core::sc_signal<Sc::uint_t<Sc::kFaceW>> out_face_{"out_face"};
-  sc_core::sc_signal<Sc::int_t<Sc::kCoordW>> out_u_{"out_u"}, out_v_{"out_v"};
-};
-
-class HlsEngine : public Engine {
- public:
-  std::string name() const override { return "hls"; }
-  RunResult run(const std::vector<Txn>& items, const RunOptions& options) override {
-    return run_hls<HlsBench>(
-        [](sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n) {
-          return std::make_unique<HlsBench>("bench", clk, rst_n);
-        },
-        items, items.size(), options);
+  void step(const Txn& t, Sink& sink) override {
+    const deflect::CubeAddress a = deflect::cube_address(
+        cube_x(t), cube_y(t), cube_z(t), cube_face_log2(t), CubeAddressBlock::kSeedBits);
+    Txn out;
+    out.f[D::out_face] = a.face;
+    out.f[D::out_u] = static_cast<uint64_t>(static_cast<int64_t>(a.u)) & kCoordMask;
+    out.f[D::out_v] = static_cast<uint64_t>(static_cast<int64_t>(a.v)) & kCoordMask;
+    sink.output(out);
   }
 };
 
@@ -150,7 +90,7 @@ std::vector<std::array<int32_t, 3>> hard_vectors() {
   std::vector<std::array<int32_t, 3>> v;
   const auto put = [&v](int32_t x, int32_t y, int32_t z) {
     if (std::max({x, y, z}) > 32767 || std::min({x, y, z}) < -32768)
-      throw std::logic_error("cube-map: a directed component beyond SQ2.14");
+      throw std::logic_error("cube_address: a directed component beyond SQ2.14");
     v.push_back({x, y, z});
   };
   // A vector with the components of a "pattern" (a, b, c) placed on the axes (i, j, k).
@@ -226,17 +166,10 @@ std::vector<std::array<int32_t, 3>> hard_vectors() {
 }  // namespace
 
 Txn cube_item(int32_t x, int32_t y, int32_t z, int face_log2) {
-  Txn t;
-  t.f[kCubeX] = static_cast<uint16_t>(x);
-  t.f[kCubeY] = static_cast<uint16_t>(y);
-  t.f[kCubeZ] = static_cast<uint16_t>(z);
-  t.f[kCubeLog2] = static_cast<uint64_t>(face_log2) & ((1u << fmts::kMipLog2.width()) - 1);
-  return t;
+  return channel_item(D::table(), "in",
+                      {static_cast<uint16_t>(x), static_cast<uint16_t>(y), static_cast<uint16_t>(z),
+                       static_cast<uint64_t>(face_log2)});
 }
-int16_t cube_x(const Txn& item) { return static_cast<int16_t>(item.f[kCubeX]); }
-int16_t cube_y(const Txn& item) { return static_cast<int16_t>(item.f[kCubeY]); }
-int16_t cube_z(const Txn& item) { return static_cast<int16_t>(item.f[kCubeZ]); }
-int cube_face_log2(const Txn& item) { return static_cast<int>(item.f[kCubeLog2]); }
 
 CubeFaceCoords cube_face_coords(int32_t x, int32_t y, int32_t z) {
   const int32_t ax = std::abs(x), ay = std::abs(y), az = std::abs(z);
@@ -251,18 +184,12 @@ CubeFaceCoords cube_face_coords(int32_t x, int32_t y, int32_t z) {
   return c;
 }
 
-uint32_t cube_seed_index(uint32_t ma, int seed_bits) {
-  if (ma == 0) return 0;
-  const uint32_t d = (ma << std::countl_zero(ma)) >> 16;
-  return (d >> (15 - seed_bits)) & ((1u << seed_bits) - 1);
+CubeAddressBlock::CubeAddressBlock(const BlockOptions&) : DescribedBlockOf(D::table()) {
+  add_level("hls", hls_level<desc::cube_address_sc, hls::CubeAddressSc>(kSeedBits));
+  TMU_ADD_RTL_LEVELS(cube_address, variant());
 }
 
-CubeMapBlock::CubeMapBlock(const BlockOptions&) {}
-
-const Schema& CubeMapBlock::inputs() const { return kInputs; }
-const Schema& CubeMapBlock::outputs() const { return kOutputs; }
-
-std::vector<Txn> CubeMapBlock::directed_items() const {
+std::vector<Txn> CubeAddressBlock::directed_items() const {
   std::vector<Txn> items;
   // Every hard vector at the smallest, a typical and the largest face sizes.
   for (const auto& [x, y, z] : hard_vectors()) {
@@ -300,7 +227,7 @@ std::vector<Txn> CubeMapBlock::directed_items() const {
   return items;
 }
 
-std::vector<Txn> CubeMapBlock::random_items(std::mt19937_64& rng, size_t count) const {
+std::vector<Txn> CubeAddressBlock::random_items(std::mt19937_64& rng, size_t count) const {
   std::vector<Txn> items;
   items.reserve(count);
   std::uniform_real_distribution<double> log_length(-14.0, 1.0);
@@ -338,14 +265,7 @@ std::vector<Txn> CubeMapBlock::random_items(std::mt19937_64& rng, size_t count) 
   return items;
 }
 
-std::unique_ptr<Engine> CubeMapBlock::engine(const std::string& level) const {
-  if (level == "golden") return std::make_unique<GoldenEngine>();
-  if (level == "hls") return std::make_unique<HlsEngine>();
-  if (level == "rtl") return make_cube_map_rtl_engine<Vtmu_cube_address>("rtl");
-  if (level == "icarus")
-    return make_icarus_engine("icarus", {"cube_address_tb", "tmu_cube_address"}, kInputs, kOutputs);
-  throw std::invalid_argument("cube-map: no engine '" + level + "' (golden, hls, rtl, icarus)");
-}
+std::unique_ptr<Model> CubeAddressBlock::golden() const { return std::make_unique<Golden>(); }
 
 namespace {
 constexpr const char* kZero = "zero vector (+X, the face's centre)";
@@ -359,7 +279,7 @@ constexpr const char* kBorder = "|sc| or |tc| = ma != 0 (the face's border)";
 constexpr const char* kEverySeed = "every seed-table index (ma)";
 }  // namespace
 
-std::vector<std::string> CubeMapBlock::coverage_cases() const {
+std::vector<std::string> CubeAddressBlock::coverage_cases() const {
   std::vector<std::string> cases;
   for (const char* f : kFaceNames) cases.push_back(fmt::format("face {}", f));
   cases.insert(cases.end(), {kZero, kAxis, kEdgeXY, kEdgeXZ, kEdgeYZ, kCorner, kNearEdge, kBorder,
@@ -373,8 +293,8 @@ std::vector<std::string> CubeMapBlock::coverage_cases() const {
   return cases;
 }
 
-void CubeMapBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&,
-                         Coverage& cov) const {
+void CubeAddressBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&,
+                             Coverage& cov) const {
   if (index == 0 || index != cover_next_) seen_seed_.clear();
   cover_next_ = index + 1;
   const Txn& item = items[index];
@@ -417,22 +337,6 @@ void CubeMapBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&
       seen_seed_.size() == (size_t{1} << kSeedBits)) {
     ++cov[kEverySeed];
   }
-}
-
-std::vector<Port> CubeMapBlock::ports() const {
-  return {{"clk_i"},
-          {"rst_ni"},
-          {"in_valid_i"},
-          {"in_ready_o"},
-          {"in_x_i", fmts::kUnitComp.width(), true},
-          {"in_y_i", fmts::kUnitComp.width(), true},
-          {"in_z_i", fmts::kUnitComp.width(), true},
-          {"in_face_log2_i", fmts::kMipLog2.width()},
-          {"out_valid_o"},
-          {"out_ready_i"},
-          {"out_face_o", fmts::kCubeFace.width()},
-          {"out_u_o", fmts::kTexCoord.width(), true},
-          {"out_v_o", fmts::kTexCoord.width(), true}};
 }
 
 }  // namespace tmu::tb

@@ -1,28 +1,26 @@
-#include "blocks/specular_combine_block.hpp"
-
-#include <Vtmu_specular_combine.h>
+#include "blocks/specular_combine/specular_combine_block.hpp"
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <stdexcept>
 
-#include "formats/formats.hpp"
-#include "harness/hls_runner.hpp"
+#include "harness/described_engines.hpp"
+#include "harness/described_hls.hpp"
 #include "hls/texram/specular_combine_sc.hpp"
-#include "icarus/icarus_engine.hpp"
+#include "rtl_models_specular_combine.hpp"
 #include "texram/specular_combine.hpp"
 
+TMU_DESCRIBE_SC(specular_combine)
+TMU_REGISTER_BLOCK(specular_combine, SpecularCombineBlock,
+                   "Specular combine (000 §7 eq. 6, §8 eq. 7): per channel min(255, D + E R / "
+                   "255), alpha from D",
+                   "specular-combine")
+
 namespace tmu::tb {
-namespace fmts = tmu::formats;
 using texram::mul255;
+using D = desc::specular_combine;
 
 namespace {
-
-const Schema kInputs({{"diffuse", fmts::kRgba8888},
-                      {"specular", fmts::kRgba8888},
-                      {"reflectance", fmts::kRgba8888}});
-const Schema kOutputs({{"colour", fmts::kRgba8888}});
 
 // Channel c of an RGBA8888 word: 0 R, 1 G, 2 B, 3 A.
 constexpr uint32_t channel(uint32_t rgba, int c) { return (rgba >> (24 - 8 * c)) & 0xFFu; }
@@ -33,84 +31,22 @@ constexpr uint32_t with_channel(uint32_t rgba, int c, uint32_t v) {
 constexpr uint32_t pack(uint32_t r, uint32_t g, uint32_t b, uint32_t a) {
   return (r & 0xFFu) << 24 | (g & 0xFFu) << 16 | (b & 0xFFu) << 8 | (a & 0xFFu);
 }
-uint32_t diffuse_of(const Txn& t) { return static_cast<uint32_t>(t.f[kSpcDiffuse]); }
-uint32_t specular_of(const Txn& t) { return static_cast<uint32_t>(t.f[kSpcSpecular]); }
-uint32_t reflectance_of(const Txn& t) { return static_cast<uint32_t>(t.f[kSpcReflectance]); }
+uint32_t diffuse_of(const Txn& t) { return static_cast<uint32_t>(t.f[D::in_diffuse]); }
+uint32_t specular_of(const Txn& t) { return static_cast<uint32_t>(t.f[D::in_specular]); }
+uint32_t reflectance_of(const Txn& t) { return static_cast<uint32_t>(t.f[D::in_reflectance]); }
 
 // The diffuse channel that puts d + mul255(e, r) at 255 + delta (clamped to 0..255).
 uint32_t edge_diffuse(uint32_t e, uint32_t r, int delta) {
   return static_cast<uint32_t>(std::clamp(255 - static_cast<int>(mul255(e, r)) + delta, 0, 255));
 }
 
-class GoldenEngine : public Engine {
+class Golden : public Model {
  public:
-  std::string name() const override { return "golden"; }
-  RunResult run(const std::vector<Txn>& items, const RunOptions&) override {
-    RunResult r;
-    r.outputs.reserve(items.size());
-    const auto start = std::chrono::steady_clock::now();
-    for (const Txn& t : items) {
-      Txn out;
-      out.f[kSpcColour] =
-          texram::specular_combine(diffuse_of(t), specular_of(t), reflectance_of(t));
-      r.outputs.push_back(out);
-    }
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.output_cycles.assign(r.outputs.size(), 0);
-    return r;
-  }
-};
-
-// The hls module with its signals, driven by the harness's ScDriver.
-class HlsBench : public sc_core::sc_module, public ScAdapter {
- public:
-  HlsBench(sc_core::sc_module_name name, sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n)
-      : sc_module(name), dut_("dut") {
-    dut_.clk_i(clk);
-    dut_.rst_ni(rst_n);
-    dut_.in_valid_i(in_valid_);
-    dut_.in_ready_o(in_ready_);
-    dut_.in_diffuse_i(in_diffuse_);
-    dut_.in_specular_i(in_specular_);
-    dut_.in_reflectance_i(in_reflectance_);
-    dut_.out_valid_o(out_valid_);
-    dut_.out_ready_i(out_ready_);
-    dut_.out_colour_o(out_colour_);
-  }
-  void drive(const Txn* item) override {
-    in_valid_.write(item != nullptr);
-    in_diffuse_.write(item ? diffuse_of(*item) : 0u);
-    in_specular_.write(item ? specular_of(*item) : 0u);
-    in_reflectance_.write(item ? reflectance_of(*item) : 0u);
-  }
-  bool accepts(const Txn&) const override { return in_ready_.read(); }
-  void set_out_ready(bool ready) override { out_ready_.write(ready); }
-  bool out_valid() const override { return out_valid_.read(); }
-  Txn out() const override {
-    Txn t;
-    t.f[kSpcColour] = out_colour_.read();
-    return t;
-  }
-
- private:
-  using Sc = hls::SpecularCombineSc;
-  Sc dut_;
-  sc_core::sc_signal<bool> in_valid_{"in_valid"}, in_ready_{"in_ready"};
-  sc_core::sc_signal<Sc::rgba_t> in_diffuse_{"in_diffuse"}, in_specular_{"in_specular"},
-      in_reflectance_{"in_reflectance"};
-  sc_core::sc_signal<bool> out_valid_{"out_valid"}, out_ready_{"out_ready"};
-  sc_core::sc_signal<Sc::rgba_t> out_colour_{"out_colour"};
-};
-
-class HlsEngine : public Engine {
- public:
-  std::string name() const override { return "hls"; }
-  RunResult run(const std::vector<Txn>& items, const RunOptions& options) override {
-    return run_hls<HlsBench>(
-        [](sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n) {
-          return std::make_unique<HlsBench>("bench", clk, rst_n);
-        },
-        items, items.size(), options);
+  void step(const Txn& t, Sink& sink) override {
+    Txn out;
+    out.f[D::out_colour] =
+        texram::specular_combine(diffuse_of(t), specular_of(t), reflectance_of(t));
+    sink.output(out);
   }
 };
 
@@ -123,15 +59,13 @@ constexpr uint32_t sweep_pair(uint32_t i, int c) {
 }  // namespace
 
 Txn specular_combine_item(uint32_t diffuse, uint32_t specular, uint32_t reflectance) {
-  Txn t;
-  t.f[kSpcDiffuse] = diffuse;
-  t.f[kSpcSpecular] = specular;
-  t.f[kSpcReflectance] = reflectance;
-  return t;
+  return channel_item(D::table(), "in", {diffuse, specular, reflectance});
 }
 
-const Schema& SpecularCombineBlock::inputs() const { return kInputs; }
-const Schema& SpecularCombineBlock::outputs() const { return kOutputs; }
+SpecularCombineBlock::SpecularCombineBlock(const BlockOptions&) : DescribedBlockOf(D::table()) {
+  add_level("hls", hls_level<desc::specular_combine_sc, hls::SpecularCombineSc>());
+  TMU_ADD_RTL_LEVELS(specular_combine, variant());
+}
 
 std::vector<Txn> SpecularCombineBlock::directed_items() const {
   std::vector<Txn> items;
@@ -243,17 +177,7 @@ std::vector<Txn> SpecularCombineBlock::random_items(std::mt19937_64& rng, size_t
   return items;
 }
 
-std::unique_ptr<Engine> SpecularCombineBlock::engine(const std::string& level) const {
-  if (level == "golden") return std::make_unique<GoldenEngine>();
-  if (level == "hls") return std::make_unique<HlsEngine>();
-  if (level == "rtl") return make_specular_combine_rtl_engine<Vtmu_specular_combine>("rtl");
-  if (level == "icarus") {
-    return make_icarus_engine("icarus", {"specular_combine_tb", "tmu_specular_combine"}, kInputs,
-                              kOutputs);
-  }
-  throw std::invalid_argument("specular-combine: no engine '" + level +
-                              "' (golden, hls, rtl, icarus)");
-}
+std::unique_ptr<Model> SpecularCombineBlock::golden() const { return std::make_unique<Golden>(); }
 
 namespace {
 constexpr const char* kSaturated = "channel saturated (D + ER > 255)";
@@ -343,13 +267,6 @@ void SpecularCombineBlock::cover(const std::vector<Txn>& items, size_t index, co
   if (da != channel(ew, 3) && da != channel(rw, 3)) ++cov[kAlphaDiffers];
   if (da == 0) ++cov[kAlpha0];
   if (da == 255) ++cov[kAlpha255];
-}
-
-std::vector<Port> SpecularCombineBlock::ports() const {
-  const int w = fmts::kRgba8888.width();
-  return {{"clk_i"},           {"rst_ni"},           {"in_valid_i"},          {"in_ready_o"},
-          {"in_diffuse_i", w}, {"in_specular_i", w}, {"in_reflectance_i", w}, {"out_valid_o"},
-          {"out_ready_i"},     {"out_colour_o", w}};
 }
 
 }  // namespace tmu::tb
