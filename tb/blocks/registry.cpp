@@ -4,13 +4,10 @@
 #include <stdexcept>
 
 #include "blocks/ccc_decoder_block.hpp"
-#include "blocks/coord_gen_block.hpp"
 #include "blocks/cube_map_block.hpp"
-#include "blocks/deflect_block.hpp"
 #include "blocks/footprint_block.hpp"
 #include "blocks/material_block.hpp"
 #include "blocks/mipgen_block.hpp"
-#include "blocks/normal_encoder_block.hpp"
 #include "blocks/specular_combine_block.hpp"
 #include "blocks/trilinear_block.hpp"
 
@@ -62,21 +59,9 @@ std::vector<BlockInfo> block_list() {
        "Footprint assembly (000 §10): N trilinear probes along the longer derivative, "
        "averaged",
        {}},
-      {"coord-gen",
-       "Shading/environment-map coordinates (001 §5, eq. 17-22): seven tables -> uN, vN, "
-       "uR, vR, wR",
-       {}},
       {"cube-map",
        "Cube environment map addressing (000 §7): reflection vector -> face and texel "
        "coordinate, dividing by the largest component (the normal encoder's divider)",
-       {}},
-      {"deflect",
-       "Bump deflection unit (001 §4.4, §6.2): phi_D - theta_N, first-octant s2s map "
-       "through a one-block MBR, + phi_N",
-       {}},
-      {"normal-encoder",
-       "Normal encoder (001 §4.1, eq. 12-16): (x, y, z) -> (phi, theta) by two seeded "
-       "Newton-Raphson dividers and angle tables",
        {}},
       {"specular-combine",
        "Specular combine (000 §7 eq. 6, §8 eq. 7): per channel min(255, D + E R / 255), "
@@ -110,10 +95,7 @@ std::unique_ptr<Block> make_block(const std::string& name_or_alias, const BlockO
   if (name == "mipgen") return std::make_unique<MipgenBlock>(options);
   if (name == "trilinear") return std::make_unique<TrilinearBlock>(options);
   if (name == "footprint") return std::make_unique<FootprintBlock>(options);
-  if (name == "coord-gen") return std::make_unique<CoordGenBlock>(options.seed);
   if (name == "cube-map") return std::make_unique<CubeMapBlock>(options);
-  if (name == "deflect") return std::make_unique<DeflectBlock>(options);
-  if (name == "normal-encoder") return std::make_unique<NormalEncoderBlock>(options);
   if (name == "specular-combine") return std::make_unique<SpecularCombineBlock>();
   if (name == "material") return std::make_unique<MaterialBlock>(options);
   std::string known;
