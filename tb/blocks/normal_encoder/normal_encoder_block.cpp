@@ -262,6 +262,12 @@ std::vector<Txn> NormalEncoderBlock::directed_items() const {
       items.push_back(normal_item(p, q, 0));
     }
   }
+  // Just off the y-z plane on the -x side (|x| < z / 256: t_phi = 0, k_phi = 0), where the
+  // expansion's 4Q - 0 must wrap to phi 0.
+  for (const auto& [x, y, z] :
+       {std::array<int16_t, 3>{-1, 0, kOne}, {-63, 5000, 16384}, {-127, -9000, 32767}}) {
+    items.push_back(normal_item(x, y, z));
+  }
   // Two equal largest components: |x| = |z| (t_phi = 1), y^2 = x^2 + z^2 from Pythagorean
   // triples (t_theta = 1), |y| = |x| with z = 0, and all three equal; each sign.
   for (int s = 0; s < 8; ++s) {
