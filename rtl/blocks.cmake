@@ -250,7 +250,8 @@ tmu_mutant(deflect quadrant FILE deflect/tmu_deflect_address.sv
   FROM "quadrant[1] ^ quadrant[0]" TO "quadrant[1]"
   WHY "z's sign is phi''s top bit alone (quadrants 1 and 3 swap their z signs)")
 tmu_mutant(deflect unreset FILE deflect/tmu_deflect.sv EXPECT x-leak
-  FROM "      s1_valid_q  <= 1'b0;\n      s1_missed_q <= 1'b0;\n" TO ""
-  WHY "S1's valid and miss flag keep their initial values through reset (a random request is looked up)")
+  FROM "      s1_valid_q  <= 1'b0;\n      s1_missed_q <= 1'b0;\n      fetching_q  <= 1'b0;\n      mbr_valid_q <= 1'b0;\n"
+  TO "      fetching_q  <= 1'b0;\n"
+  WHY "S1's valid and miss flag and the MBR's valid keep their initial values through reset (three bits, so two random starts rarely agree: a random request is looked up, the random MBR hit. The fetch flag keeps its reset: else a start with it set deadlocks both runs alike)")
 
 tmu_write_block_tables()
