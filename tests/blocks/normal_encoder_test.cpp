@@ -1,14 +1,16 @@
 // What is the normal encoder's own (001 §4.1; the conformance suite, tests/conformance_test.cpp,
 // checks what every block shares): the worked example of rtl/deflect/tmu_normal_encoder.sv's
 // header through every engine, one normal per clock, the directed items reaching every table
-// index the ratios can reach, widths no variant verilates through hls, and the rtl level's
-// error at those widths.
+// index the ratios can reach, widths no variant verilates through hls, and which levels the
+// block has at those widths.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "blocks/normal_encoder/normal_encoder_block.hpp"
 #include "harness/cosim.hpp"
@@ -92,21 +94,26 @@ TEST(NormalEncoderTest, ExtremeWidthsGoldenVsHls) {
   }
 }
 
-// Widths without a verilated model: the rtl level is an error naming the widths asked for and
-// the ones there are; the reproduce line keeps the widths.
-TEST(NormalEncoderTest, UnverilatedWidthsHaveNoRtlModel) {
+// Widths without a verilated model have no rtl level (hls and icarus run them), and asking for
+// one names the levels there are; the reproduce line keeps the widths. A variant's widths have
+// their rtl level.
+TEST(NormalEncoderTest, UnverilatedWidthsHaveNoRtlLevel) {
   const NormalEncoderBlock block = block_of(8, 3, 6);
   EXPECT_EQ(block.repro_options(), "--encoder 8,3,6");
+  EXPECT_EQ(block.levels(), (std::vector<std::string>{"golden", "hls", "icarus"}));
   try {
     (void)block.engine("rtl");
     FAIL() << "an rtl engine for widths that are not verilated";
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("no rtl model for --encoder 8,3,6"), std::string::npos) << what;
-    EXPECT_NE(what.find("--encoder 7,1,7"), std::string::npos) << what;
+    EXPECT_NE(what.find("no engine 'rtl' (levels: golden, hls, icarus)"), std::string::npos)
+        << what;
   }
-  EXPECT_EQ(block_of(7, 1, 7).variant(), "e1m7");
-  EXPECT_EQ(block_of(7, 1, 7).repro_options(), "--encoder 7,1,7");
+  const NormalEncoderBlock linear = block_of(7, 1, 7);
+  EXPECT_EQ(linear.variant(), "e1m7");
+  EXPECT_EQ(linear.repro_options(), "--encoder 7,1,7");
+  const std::vector<std::string> have = linear.levels();
+  EXPECT_NE(std::find(have.begin(), have.end(), "rtl"), have.end());
 }
 
 }  // namespace

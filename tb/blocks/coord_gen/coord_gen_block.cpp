@@ -9,7 +9,6 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "blocks/normal_encoder/no_rtl_level.hpp"
 #include "formats/formats.hpp"
 #include "harness/described_engines.hpp"
 #include "harness/described_hls.hpp"
@@ -185,9 +184,10 @@ CoordGenBlock::CoordGenBlock(const BlockOptions& options)
   }
   add_level("hls", hls_level<desc::coord_gen_sc, hls::CoordGenSc>(config_));
   TMU_ADD_RTL_LEVELS(coord_gen, variant());
+  // Tables no variant verilates have no rtl level (texsim cosim notes it); Icarus runs them
+  // with the grid and width as the RTL's parameters.
   const std::vector<std::string> have = levels();
   if (std::find(have.begin(), have.end(), "rtl") == have.end()) {
-    add_level("rtl", no_rtl_level(name(), tables_options(c)));
     add_level("icarus", icarus_level("tmu_coord_gen", fmt::format("PhiBits={} ValueBits={}",
                                                                   c.grid.phi_bits, c.value_bits)));
   }

@@ -8,8 +8,8 @@
 // write before it (the RTL reads its tables in the cycle it accepts the request).
 //
 // The tables' grid and entry width are BlockOptions::coord_tables (`--coord-tables A,W`):
-// golden, hls and icarus take any the ports carry (A 6..9, W 8..10), the rtl level the
-// verilated variants of rtl/blocks.cmake (9,10 and 7,8) and is a clear error at others.
+// golden, hls and icarus take any the ports carry (A 6..9, W 8..10), the rtl level only the
+// verilated variants of rtl/blocks.cmake (9,10 and 7,8): at others the block has no rtl level.
 //
 // Stimulus: the setup loads every table (they have no reset) from a view frame drawn from the
 // seed (a random orthonormal side and up, dir = side x up; CoordTables::writes()). Directed:

@@ -10,7 +10,6 @@
 #include <optional>
 #include <stdexcept>
 
-#include "blocks/normal_encoder/no_rtl_level.hpp"
 #include "formats/formats.hpp"
 #include "harness/described_engines.hpp"
 #include "harness/described_hls.hpp"
@@ -194,10 +193,11 @@ NormalEncoderBlock::NormalEncoderBlock(const BlockOptions& options)
   }
   add_level("hls", hls_level<desc::normal_encoder_sc, hls::NormalEncoderSc>(options.encoder));
   TMU_ADD_RTL_LEVELS(normal_encoder, variant());
+  // Widths no variant verilates have no rtl level (texsim cosim notes it); Icarus runs them
+  // with the widths as the RTL's parameters.
   const std::vector<std::string> have = levels();
   if (std::find(have.begin(), have.end(), "rtl") == have.end()) {
     const EncoderConfig& c = config();
-    add_level("rtl", no_rtl_level(name(), encoder_options(c)));
     add_level("icarus",
               icarus_level("tmu_normal_encoder", fmt::format("SeedBits={} LutExp={} LutMant={}",
                                                              c.seed_bits, c.lut_exp, c.lut_mant)));

@@ -6,8 +6,8 @@
 //
 // The encoder's widths are BlockOptions::encoder (`--encoder S,E,M`; grid A = 9, the ports'):
 // golden, hls and icarus (the widths reach the RTL as Verilog parameters) take any, the rtl
-// level the verilated variants of rtl/blocks.cmake (the default and the paper's linear index
-// E = 1, M = 7) and is a clear error at other widths.
+// level only the verilated variants of rtl/blocks.cmake (the default and the paper's linear
+// index E = 1, M = 7): at other widths the block has no rtl level.
 #pragma once
 
 #include <cstdint>
