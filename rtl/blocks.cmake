@@ -353,4 +353,53 @@ tmu_mutant(cube_address unreset FILE deflect/tmu_cube_address.sv EXPECT x-leak
   FROM "      valid_q <= '0;\n" TO ""
   WHY "the seven stage valids keep their initial values through reset (random addresses leave)")
 
+# Normal encoder (001 §4.1): the default angle table (E = 4, M = 5) and the paper's linear index
+# (E = 1, M = 7: 128 entries). Other widths run on golden, hls and icarus only.
+tmu_block(normal_encoder)
+tmu_block(normal_encoder VARIANT e1m7 OPTIONS "--encoder 7,1,7" ARGS -GLutExp=1 -GLutMant=7)
+tmu_mutant(normal_encoder nr FILE deflect/tmu_normal_divider.sv
+  FROM "16'(nr_product >> 29)" TO "16'((nr_product >> 30) << 1)"
+  WHY "the Newton-Raphson step truncates one bit more (r1's LSB lost): t one LSB low, seen where t sits on a table bucket's first value")
+tmu_mutant(normal_encoder pole FILE deflect/tmu_normal_encoder.sv
+  FROM "k_theta >= Q ?" TO "1'b0 ?"
+  WHY "theta does not saturate at the poles (k = Q wraps to magnitude 0)")
+tmu_mutant(normal_encoder unreset FILE deflect/tmu_normal_encoder.sv EXPECT x-leak
+  FROM "      valid_q <= '0;\n" TO ""
+  WHY "the eight stage valids keep their initial values through reset (random normals leave)")
+tmu_mutant(normal_encoder entry_round VARIANT e1m7 FILE deflect/tmu_normal_angle_lut.sv
+  FROM "/ Q) + 0.5));" TO "/ Q) + 0.4));"
+  WHY "the linear angle table rounds its entries up from 0.6 instead of a half (some entries one step low)")
+
+# Shading/environment-map coordinate generator (001 §5): the default 512 x 256 grid with 10-bit
+# entries, and the parameters' other corner, a 128 x 64 grid with 8-bit entries (no rounding in
+# the dot products, the ports' upper bits ignored).
+tmu_block(coord_gen)
+tmu_block(coord_gen VARIANT a7w8 OPTIONS "--coord-tables 7,8" ARGS -GPhiBits=7 -GValueBits=8)
+tmu_mutant(coord_gen phi_neg FILE deflect/tmu_coord_dot.sv
+  FROM "phi_neg_i ? -phi_entry_i : phi_entry_i" TO "phi_entry_i"
+  WHY "F2, G2, H2 not negated for phi >= 2Q (the phi + pi symmetry lost)")
+tmu_mutant(coord_gen round FILE deflect/tmu_coord_reflect.sv
+  FROM "(PW'(1) << (Frac - 2))" TO "(PW'(1) << (Frac - 3))"
+  WHY "the reflection adds a quarter instead of half an LSB before its shift")
+tmu_mutant(coord_gen unreset FILE deflect/tmu_coord_gen.sv EXPECT x-leak
+  FROM "      s1_valid_q  <= 1'b0;\n      s2_valid_q  <= 1'b0;\n      out_valid_q <= 1'b0;\n" TO ""
+  WHY "the three stage valids keep their initial values through reset (random coordinates leave)")
+tmu_mutant(coord_gen phi_addr VARIANT a7w8 FILE deflect/tmu_coord_gen.sv
+  FROM "assign phi_addr_ok   = (tw_addr_i >> HalfBits) == '0;"
+  TO "assign phi_addr_ok   = (tw_addr_i >> AW) == '0;"
+  WHY "on the small grid a write beyond a phi table's 2Q entries is not ignored: it overwrites entry addr mod 2Q")
+
+# Bump deflection unit with its MBR (001 §4.4, §6.2): the map memory's requests compared.
+tmu_block(deflect)
+tmu_mutant(deflect tag FILE deflect/tmu_deflect.sv
+  FROM "mbr_tag_q == s1_block_q" TO "mbr_tag_q[BlockW-1:1] == s1_block_q[BlockW-1:1]"
+  WHY "the MBR's tag compare ignores the block address's lowest bit (neighbouring blocks alias: hits for misses, wrong entries, missing requests)")
+tmu_mutant(deflect quadrant FILE deflect/tmu_deflect_address.sv
+  FROM "quadrant[1] ^ quadrant[0]" TO "quadrant[1]"
+  WHY "z's sign is phi''s top bit alone (quadrants 1 and 3 swap their z signs)")
+tmu_mutant(deflect unreset FILE deflect/tmu_deflect.sv EXPECT x-leak
+  FROM "      s1_valid_q  <= 1'b0;\n      s1_missed_q <= 1'b0;\n      fetching_q  <= 1'b0;\n      mbr_valid_q <= 1'b0;\n"
+  TO "      fetching_q  <= 1'b0;\n"
+  WHY "S1's valid and miss flag and the MBR's valid keep their initial values through reset (three bits, so two random starts rarely agree: a random request is looked up, the random MBR hit. The fetch flag keeps its reset: else a start with it set deadlocks both runs alike)")
+
 tmu_write_block_tables()

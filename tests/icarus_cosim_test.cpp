@@ -1,8 +1,9 @@
 // The same RTL under Icarus Verilog, a second simulator (tb/icarus, docs/harness.md "Icarus
 // Verilog"): every block with an icarus engine against golden, bit for bit, under random
-// back-pressure (a few thousand transactions each); the encoder at other widths (testbench
-// parameters); the Icarus 11 compatibility rewrite rule by rule; and proof that the comparison
-// has teeth: a mutated copy of the specular combine under Icarus must fail.
+// back-pressure (a few thousand transactions each); the encoder and the coordinate generator
+// at a variant's and at other widths (the RTL's parameters); the Icarus 11 compatibility
+// rewrite rule by rule; and proof that the comparison has teeth: a mutated copy of the
+// specular combine under Icarus must fail.
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -57,6 +58,12 @@ BlockOptions shared_fractal() {
   return o;
 }
 
+BlockOptions coord_tables(int phi_bits, int value_bits) {
+  BlockOptions o;
+  o.coord_tables = {deflect::SphereGrid{phi_bits}, value_bits};
+  return o;
+}
+
 BlockOptions encoder(int seed_bits, int lut_exp, int lut_mant) {
   BlockOptions o;
   o.encoder.seed_bits = seed_bits;
@@ -92,8 +99,13 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"turbulence_shared", "turbulence", 300, shared_fractal()},
                       Case{"ccc_decoder", "ccc_decoder", 3000, {}},
                       Case{"normal_encoder", "normal-encoder", 2000, {}},
-                      // widths that are not verilated: the testbench's parameters
+                      // a verilated variant's parameters, and widths that are not verilated:
+                      // the RTL's parameters in the generated testbench
+                      Case{"normal_encoder_e1m7", "normal_encoder", 1000, encoder(7, 1, 7)},
                       Case{"normal_encoder_8_3_6", "normal-encoder", 1000, encoder(8, 3, 6)},
+                      Case{"coord_gen", "coord_gen", 2000, {}},
+                      Case{"coord_gen_a7w8", "coord_gen", 1000, coord_tables(7, 8)},
+                      Case{"coord_gen_a8w9", "coord-gen", 1000, coord_tables(8, 9)},
                       Case{"cube_address", "cube_address", 2000, {}}),
     [](const ::testing::TestParamInfo<Case>& test) { return test.param.name; });
 

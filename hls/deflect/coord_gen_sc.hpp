@@ -15,8 +15,10 @@
 #include <cstdint>
 #include <systemc>
 
+#include "blocks/coord_gen/coord_gen_ports.hpp"
 #include "deflect/coord_table_memory.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/sc_ports.hpp"
 #include "hls/common/small_fifo.hpp"
 
 namespace tmu::hls {
@@ -25,32 +27,7 @@ namespace fmts = tmu::formats;
 
 class CoordGenSc : public sc_core::sc_module {
  public:
-  template <int W>
-  using uint_t = sc_dt::sc_uint<W>;
-  template <int W>
-  using int_t = sc_dt::sc_int<W>;
-
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  sc_core::sc_in<bool> tw_valid_i{"tw_valid_i"};
-  sc_core::sc_out<bool> tw_ready_o{"tw_ready_o"};
-  sc_core::sc_in<uint_t<fmts::kCoordTableId.width()>> tw_table_i{"tw_table_i"};
-  sc_core::sc_in<uint_t<fmts::kCoordTableAddr.width()>> tw_addr_i{"tw_addr_i"};
-  sc_core::sc_in<int_t<fmts::kCoordValue.width()>> tw_value_i{"tw_value_i"};
-
-  sc_core::sc_in<bool> in_valid_i{"in_valid_i"};
-  sc_core::sc_out<bool> in_ready_o{"in_ready_o"};
-  sc_core::sc_in<uint_t<fmts::kSpherePhi.width()>> in_phi_i{"in_phi_i"};
-  sc_core::sc_in<uint_t<fmts::kSphereTheta.width()>> in_theta_i{"in_theta_i"};
-
-  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
-  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
-  sc_core::sc_out<int_t<fmts::kUnitComp.width()>> out_un_o{"out_un_o"};
-  sc_core::sc_out<int_t<fmts::kUnitComp.width()>> out_vn_o{"out_vn_o"};
-  sc_core::sc_out<int_t<fmts::kUnitComp.width()>> out_ur_o{"out_ur_o"};
-  sc_core::sc_out<int_t<fmts::kUnitComp.width()>> out_vr_o{"out_vr_o"};
-  sc_core::sc_out<int_t<fmts::kUnitComp.width()>> out_wr_o{"out_wr_o"};
+  TMU_SC_PORTS(coord_gen)
 
   SC_HAS_PROCESS(CoordGenSc);
   explicit CoordGenSc(sc_core::sc_module_name name, const deflect::TableConfig& config = {})
@@ -60,12 +37,16 @@ class CoordGenSc : public sc_core::sc_module {
   }
 
  private:
+  // A component's two's complement bits on its port.
+  static uint64_t raw(int32_t v) {
+    return static_cast<uint64_t>(v) & ((uint64_t{1} << fmts::kUnitComp.width()) - 1);
+  }
   void write_out(const deflect::MapCoords& c) {
-    out_un_o.write(c.un);
-    out_vn_o.write(c.vn);
-    out_ur_o.write(c.ur);
-    out_vr_o.write(c.vr);
-    out_wr_o.write(c.wr);
+    out_un_o.write(raw(c.un));
+    out_vn_o.write(raw(c.vn));
+    out_ur_o.write(raw(c.ur));
+    out_vr_o.write(raw(c.vr));
+    out_wr_o.write(raw(c.wr));
   }
 
   void run() {
@@ -93,7 +74,7 @@ class CoordGenSc : public sc_core::sc_module {
       if (tw_ready_o.read() && tw_valid_i.read()) {
         tables_.write({static_cast<uint8_t>(tw_table_i.read()),
                        static_cast<uint32_t>(tw_addr_i.read()),
-                       static_cast<int32_t>(tw_value_i.read().to_int())});
+                       static_cast<int32_t>(signed_value(tw_value_i.read(), fmts::kCoordValue))});
       }
     }
   }

@@ -18,9 +18,11 @@
 #include <cstdint>
 #include <systemc>
 
+#include "blocks/deflect/deflect_ports.hpp"
 #include "deflect/s2s_map.hpp"
 #include "deflect/sphere_grid.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/sc_ports.hpp"
 #include "hls/common/small_fifo.hpp"
 
 namespace tmu::hls {
@@ -28,35 +30,7 @@ namespace tmu::hls {
 namespace fmts = tmu::formats;
 
 SC_MODULE(DeflectSc) {
-  template <int W>
-  using uint_t = sc_dt::sc_uint<W>;
-  static constexpr int kPhiW = fmts::kSpherePhi.width();
-  static constexpr int kThetaW = fmts::kSphereTheta.width();
-  static constexpr int kEntryW = fmts::kS2sEntry.width();
-  static constexpr int kBlockW = fmts::kS2sBlockAddr.width();
-  static constexpr int kBlockDataW = fmts::kS2sBlockEntries * kEntryW;
-  static constexpr int kAccessW = fmts::kMapAccess.width();
-
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  sc_core::sc_in<bool> in_valid_i{"in_valid_i"};
-  sc_core::sc_out<bool> in_ready_o{"in_ready_o"};
-  sc_core::sc_in<uint_t<kPhiW>> in_normal_phi_i{"in_normal_phi_i"};
-  sc_core::sc_in<uint_t<kThetaW>> in_normal_theta_i{"in_normal_theta_i"};
-  sc_core::sc_in<uint_t<kPhiW>> in_bump_phi_i{"in_bump_phi_i"};
-  sc_core::sc_in<uint_t<kThetaW>> in_bump_theta_i{"in_bump_theta_i"};
-
-  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
-  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
-  sc_core::sc_out<uint_t<kPhiW>> out_phi_o{"out_phi_o"};
-  sc_core::sc_out<uint_t<kThetaW>> out_theta_o{"out_theta_o"};
-  sc_core::sc_out<uint_t<kAccessW>> out_access_o{"out_access_o"};
-
-  sc_core::sc_out<bool> map_req_valid_o{"map_req_valid_o"};
-  sc_core::sc_out<uint_t<kBlockW>> map_req_block_o{"map_req_block_o"};
-  sc_core::sc_in<bool> map_resp_valid_i{"map_resp_valid_i"};
-  sc_core::sc_in<sc_dt::sc_biguint<kBlockDataW>> map_resp_data_i{"map_resp_data_i"};
+  TMU_SC_PORTS(deflect)
 
   SC_CTOR(DeflectSc) {
     SC_CTHREAD(run, clk_i.pos());
@@ -72,7 +46,9 @@ SC_MODULE(DeflectSc) {
     deflect::MapAccess access = deflect::MapAccess::kHit;
   };
 
-  static_assert(kEntryW == 2 * kPhiW - 3, "an entry is l_phi (A - 1 bits) and l_theta (A - 2)");
+  static constexpr int kEntryW = fmts::kS2sEntry.width();
+  static_assert(kEntryW == 2 * fmts::kSpherePhi.width() - 3,
+                "an entry is l_phi (A - 1 bits) and l_theta (A - 2)");
 
   void run() {
     // Reset. Not ready: a ready port promises the next edge takes the input, and the edge
@@ -113,7 +89,7 @@ SC_MODULE(DeflectSc) {
 
   // The block arrives: it becomes the MBR's content with the tag that was asked for.
   void fill() {
-    const sc_dt::sc_biguint<kBlockDataW> data = map_resp_data_i.read();
+    const auto data = map_resp_data_i.read();
     for (int o = 0; o < fmts::kS2sBlockEntries; ++o) {
       mbr_[static_cast<size_t>(o)] =
           static_cast<uint32_t>(data.range(kEntryW * o + kEntryW - 1, kEntryW * o).to_uint());
@@ -154,7 +130,7 @@ SC_MODULE(DeflectSc) {
     missed_ = false;
   }
 
-  const deflect::SphereGrid grid_{kPhiW};
+  const deflect::SphereGrid grid_{fmts::kSpherePhi.width()};
   SmallFifo<Request, 2> in_;
   SmallFifo<Result, 2> out_;
   std::array<uint32_t, fmts::kS2sBlockEntries> mbr_{};

@@ -13,8 +13,10 @@
 #include <stdexcept>
 #include <systemc>
 
+#include "blocks/normal_encoder/normal_encoder_ports.hpp"
 #include "deflect/normal_encoder.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/sc_ports.hpp"
 #include "hls/common/small_fifo.hpp"
 
 namespace tmu::hls {
@@ -23,32 +25,12 @@ namespace fmts = tmu::formats;
 
 class NormalEncoderSc : public sc_core::sc_module {
  public:
-  template <int W>
-  using uint_t = sc_dt::sc_uint<W>;
-  template <int W>
-  using int_t = sc_dt::sc_int<W>;
-  static constexpr int kCompW = fmts::kUnitComp.width();
-  static constexpr int kPhiW = fmts::kSpherePhi.width();
-  static constexpr int kThetaW = fmts::kSphereTheta.width();
-
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  sc_core::sc_in<bool> in_valid_i{"in_valid_i"};
-  sc_core::sc_out<bool> in_ready_o{"in_ready_o"};
-  sc_core::sc_in<int_t<kCompW>> in_x_i{"in_x_i"};
-  sc_core::sc_in<int_t<kCompW>> in_y_i{"in_y_i"};
-  sc_core::sc_in<int_t<kCompW>> in_z_i{"in_z_i"};
-
-  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
-  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
-  sc_core::sc_out<uint_t<kPhiW>> out_phi_o{"out_phi_o"};
-  sc_core::sc_out<uint_t<kThetaW>> out_theta_o{"out_theta_o"};
+  TMU_SC_PORTS(normal_encoder)
 
   SC_HAS_PROCESS(NormalEncoderSc);
   NormalEncoderSc(sc_core::sc_module_name name, const deflect::EncoderConfig& config = {})
       : sc_core::sc_module(name), encoder_(config) {
-    if (config.grid.phi_bits != kPhiW)
+    if (config.grid.phi_bits != fmts::kSpherePhi.width())
       throw std::invalid_argument("NormalEncoderSc: the ports are built for the A = 9 grid");
     SC_CTHREAD(run, clk_i.pos());
     reset_signal_is(rst_ni, false);
@@ -73,9 +55,10 @@ class NormalEncoderSc : public sc_core::sc_module {
       // Everything below sees the values from before this edge.
       if (out_valid_o.read() && out_ready_i.read()) out.pop();
       if (in_ready_o.read() && in_valid_i.read()) {
-        out.push(encoder_.encode(static_cast<int16_t>(in_x_i.read().to_int()),
-                                 static_cast<int16_t>(in_y_i.read().to_int()),
-                                 static_cast<int16_t>(in_z_i.read().to_int())));
+        const fx::Format c = fmts::kUnitComp;
+        out.push(encoder_.encode(static_cast<int16_t>(signed_value(in_x_i.read(), c)),
+                                 static_cast<int16_t>(signed_value(in_y_i.read(), c)),
+                                 static_cast<int16_t>(signed_value(in_z_i.read(), c))));
       }
     }
   }

@@ -3,10 +3,7 @@
 #include <block_list.hpp>
 #include <stdexcept>
 
-#include "blocks/coord_gen_block.hpp"
-#include "blocks/deflect_block.hpp"
 #include "blocks/material_block.hpp"
-#include "blocks/normal_encoder_block.hpp"
 
 namespace tmu::tb {
 
@@ -43,18 +40,6 @@ std::vector<BlockInfo> block_list() {
   std::vector<BlockInfo> out;
   for (const Entry& e : kEntries) out.push_back(e.info());
   std::vector<BlockInfo> old = {
-      {"coord-gen",
-       "Shading/environment-map coordinates (001 §5, eq. 17-22): seven tables -> uN, vN, "
-       "uR, vR, wR",
-       {}},
-      {"deflect",
-       "Bump deflection unit (001 §4.4, §6.2): phi_D - theta_N, first-octant s2s map "
-       "through a one-block MBR, + phi_N",
-       {}},
-      {"normal-encoder",
-       "Normal encoder (001 §4.1, eq. 12-16): (x, y, z) -> (phi, theta) by two seeded "
-       "Newton-Raphson dividers and angle tables",
-       {}},
       {"material",
        "Material unit (002 §4.2): registers and colour tables behind a write port; (u, v, "
        "w) -> shape -> fractal sums -> marble, wood, brick, fog, cloud, fire RGB888",
@@ -79,9 +64,6 @@ std::unique_ptr<Block> make_block(const std::string& name_or_alias, const BlockO
   for (const Entry& e : kEntries) {
     if (e.info().name == name) return e.make(options);
   }
-  if (name == "coord-gen") return std::make_unique<CoordGenBlock>(options.seed);
-  if (name == "deflect") return std::make_unique<DeflectBlock>(options);
-  if (name == "normal-encoder") return std::make_unique<NormalEncoderBlock>(options);
   if (name == "material") return std::make_unique<MaterialBlock>(options);
   std::string known;
   for (const BlockInfo& b : block_list()) known += (known.empty() ? "" : ", ") + b.name;

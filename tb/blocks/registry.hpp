@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "deflect/coord_tables.hpp"
 #include "deflect/normal_encoder.hpp"
 #include "footprint/footprint.hpp"
 #include "harness/block.hpp"
@@ -47,9 +48,12 @@ struct BlockOptions {
   // 0..dfl_map_jitter cycles drawn from the seed per request.
   int dfl_map_latency = 4;
   int dfl_map_jitter = 0;
-  // normal-encoder: the encoder's seed and angle-table widths (grid A = 9, the ports'); the
-  // rtl engine is verilated at the default and at the paper's linear index E = 1, M = 7.
+  // normal_encoder: the encoder's seed and angle-table widths (grid A = 9, the ports'); the
+  // rtl level is verilated at the variants of rtl/blocks.cmake.
   deflect::EncoderConfig encoder;
+  // coord_gen: the tables' grid (A 6..9) and entry width (W 8..10); the rtl level is verilated
+  // at the variants of rtl/blocks.cmake.
+  deflect::TableConfig coord_tables;
   // turbulence, material: the fractal sums on one noise unit shared by the four octaves (one
   // sample per 4 clocks, the thesis's design) instead of four pipelined units (one per clock).
   bool fractal_shared = false;

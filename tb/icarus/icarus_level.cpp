@@ -19,8 +19,8 @@ DescribedBlock::EngineFactory icarus_level(const std::string& top, const std::st
     list.emplace_back(w.substr(0, eq), eq == std::string::npos ? "" : w.substr(eq + 1));
   }
   return [top, list](const DescribedBlock& b) {
-    IcarusModel model(b.name() + "_tb", top, list);
-    model.text = icarus_testbench(b.port_table(), top, model.testbench);
+    IcarusModel model(b.name() + "_tb", top);
+    model.text = icarus_testbench(b.port_table(), top, model.testbench, list);
     const std::shared_ptr<const DescribedBlock> shared = b.share();
     return make_icarus_engine("icarus", std::move(model), b.inputs(), b.outputs(),
                               [shared](const Txn& t) { return shared->produces_output(t); });

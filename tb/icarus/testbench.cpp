@@ -26,8 +26,14 @@ std::string port_lines(const BlockPorts& p, bool as_ports) {
   return out;
 }
 
-std::string instance(const BlockPorts& p, const std::string& top) {
-  std::string out = fmt::format("  {} dut (\n", top);
+std::string instance(const BlockPorts& p, const std::string& top,
+                     const std::vector<std::pair<std::string, std::string>>& params = {}) {
+  std::string with;
+  for (const auto& [name, value] : params) {
+    with += fmt::format("{}.{}({})", with.empty() ? "" : ", ", name, value);
+  }
+  std::string out =
+      fmt::format("  {}{} dut (\n", top, with.empty() ? "" : fmt::format(" #({})", with));
   const std::vector<BlockPorts::Port> ports = p.ports();
   for (size_t i = 0; i < ports.size(); ++i) {
     out += fmt::format("    .{}({}){}\n", ports[i].name, ports[i].name,
@@ -50,8 +56,8 @@ const Field& input_field(const Schema& in, const PortChannel& ch, int slot) {
 
 }  // namespace
 
-std::string icarus_testbench(const BlockPorts& p, const std::string& top,
-                             const std::string& module) {
+std::string icarus_testbench(const BlockPorts& p, const std::string& top, const std::string& module,
+                             const std::vector<std::pair<std::string, std::string>>& params) {
   if (p.cfg_op() >= 0 || !p.request_channels().empty() || !p.response_channels().empty()) {
     throw std::invalid_argument(p.block() +
                                 ": no Icarus testbench for a block with a configuration or a "
@@ -68,7 +74,7 @@ std::string icarus_testbench(const BlockPorts& p, const std::string& top,
     tb += fmt::format("  logic {}{};\n", range(f.format.width()), item_var(f));
   }
   tb += port_lines(p, false);
-  tb += instance(p, top);
+  tb += instance(p, top, params);
   const std::string op = p.has_op() ? "item_op" : "";
   // Each stimulus channel sees the presented item when it is of its op, else zeros.
   std::string ready = "1'b0";

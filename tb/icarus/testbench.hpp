@@ -10,15 +10,20 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "harness/ports.hpp"
 
 namespace tmu::tb {
 
-// Throws std::invalid_argument for a block with a configuration or memory channels (the
-// generic testbench drives stream channels only).
+// The top is instantiated with `params` (NAME, VALUE: a variant's Verilog parameters; a
+// testbench parameter given to iverilog -P would not reach it). Throws std::invalid_argument
+// for a block with a configuration or memory channels (the generic testbench drives stream
+// channels only).
 std::string icarus_testbench(const BlockPorts& ports, const std::string& top,
-                             const std::string& module);
+                             const std::string& module,
+                             const std::vector<std::pair<std::string, std::string>>& params = {});
 std::string port_check(const BlockPorts& ports, const std::string& top);
 
 }  // namespace tmu::tb

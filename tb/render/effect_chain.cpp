@@ -6,10 +6,10 @@
 #include <glm/geometric.hpp>
 #include <memory>
 
-#include "blocks/coord_gen_block.hpp"
+#include "blocks/coord_gen/coord_gen_block.hpp"
 #include "blocks/cube_address/cube_address_block.hpp"
-#include "blocks/deflect_block.hpp"
-#include "blocks/normal_encoder_block.hpp"
+#include "blocks/deflect/deflect_block.hpp"
+#include "blocks/normal_encoder/normal_encoder_block.hpp"
 #include "blocks/specular_combine/specular_combine_block.hpp"
 #include "blocks/trilinear/trilinear_block.hpp"
 #include "deflect/bump_map.hpp"
@@ -106,8 +106,8 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
   }
   std::vector<SphereAngle> normal;
   for (const tb::Txn& t : runner.run(std::move(encoder), frags)) {
-    normal.push_back(
-        {static_cast<uint32_t>(t.f[tb::kEncPhi]), static_cast<uint32_t>(t.f[tb::kEncTheta])});
+    normal.push_back({static_cast<uint32_t>(t.f[tb::desc::normal_encoder::out_phi]),
+                      static_cast<uint32_t>(t.f[tb::desc::normal_encoder::out_theta])});
   }
 
   // The bump: the texel at (u, v), then the deflection.
@@ -124,17 +124,16 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
           tb::deflect_item(normal[k], deflect::unpack_bump(kChainGrid, rgb_of(texels[k]))));
     }
     const std::vector<tb::Txn> out = runner.run(std::move(deflect), frags);
-    for (size_t k = 0; k < n; ++k) {
-      normal[k] = {static_cast<uint32_t>(out[k].f[tb::kDflOutPhi]),
-                   static_cast<uint32_t>(out[k].f[tb::kDflOutTheta])};
-    }
+    // The report's MBR hits, misses and bypasses, from the results' access codes.
+    for (auto& c : tb::map_access_counters(out)) units.back().result.counters.push_back(c);
+    for (size_t k = 0; k < n; ++k) normal[k] = tb::deflect_output(out[k]);
   }
 
   // The map coordinates, from tables loaded for the camera's view frame.
   UnitRun coords;
   coords.kind = "coord-gen";
   coords.material = mat.name;
-  attach(coords, std::make_shared<tb::CoordGenBlock>(1));
+  attach(coords, std::make_shared<tb::CoordGenBlock>(tb::BlockOptions{}));
   coords.items = tb::coord_load_items(deflect::CoordTables(
       deflect::TableConfig{kChainGrid, kCoordValueBits}, camera_view_frame(in.scene.camera)));
   for (const SphereAngle& a : normal)

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "formats/formats.hpp"
 #include "texsim/texram_options.hpp"
 
 namespace tmu::texsim {
@@ -22,7 +23,8 @@ struct CosimArgs {
   // footprint overrides; empty: drawn from the seed
   std::optional<int> max_probes;
   std::string q_rule, fp_widths;
-  std::string encoder;                // normal-encoder: S,E,M
+  std::string encoder;                // normal_encoder: S,E,M
+  std::string coord_tables;           // coord_gen: A,W
   std::string fractal = "pipelined";  // turbulence: pipelined | shared
 };
 
@@ -105,9 +107,13 @@ std::shared_ptr<CosimArgs> add_cosim_options(CLI::App& app) {
       ->check(CLI::Range(0, 1000))
       ->capture_default_str();
   cmd->add_option("--encoder", args->encoder,
-                  "normal-encoder: seed-table bits S, angle-table exponent levels E and mantissa "
+                  "normal_encoder: seed-table bits S, angle-table exponent levels E and mantissa "
                   "bits M (default 7,4,5; rtl variants: " +
                       variant_options("normal_encoder") + ")");
+  cmd->add_option("--coord-tables", args->coord_tables,
+                  "coord_gen: the tables' grid bits A (a 2^A x 2^(A-1) grid) and entry bits W "
+                  "(default 9,10; rtl variants: " +
+                      variant_options("coord_gen") + ")");
   cmd->add_option("--fractal", args->fractal,
                   "turbulence, material: four noise units, one sample per clock (pipelined), or "
                   "one noise unit for the four octaves, one sample per 4 clocks (shared)")
@@ -210,6 +216,18 @@ CosimRequest finish(const CosimArgs& in) {
           "--encoder",
           "'" + args->encoder + "' is not S,E,M with S 2..12, E 1..8, M 2..10 like 7,4,5");
     }
+  }
+  if (!args->coord_tables.empty()) {
+    deflect::TableConfig& t = b.coord_tables;
+    int phi_bits = 0;
+    if (std::sscanf(args->coord_tables.c_str(), "%d,%d", &phi_bits, &t.value_bits) != 2 ||
+        phi_bits < 6 || phi_bits > formats::kSpherePhi.width() || t.value_bits < 8 ||
+        t.value_bits > formats::kCoordValue.width()) {
+      throw CLI::ValidationError(
+          "--coord-tables",
+          "'" + args->coord_tables + "' is not A,W with A 6..9, W 8..10 like 9,10");
+    }
+    t.grid = deflect::SphereGrid{phi_bits};
   }
   b.fractal_shared = args->fractal == "shared";
   return {args->block, args->cosim, args->block_options};

@@ -1,127 +1,57 @@
-#include "blocks/normal_encoder_block.hpp"
+#include "blocks/normal_encoder/normal_encoder_block.hpp"
 
-#include <Vtmu_normal_encoder.h>
-#include <Vtmu_normal_encoder_e1m7.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <optional>
 #include <stdexcept>
 
 #include "formats/formats.hpp"
-#include "harness/hls_runner.hpp"
+#include "harness/described_engines.hpp"
+#include "harness/described_hls.hpp"
 #include "hls/deflect/normal_encoder_sc.hpp"
-#include "icarus/icarus_engine.hpp"
+#include "rtl_models_normal_encoder.hpp"
+
+TMU_DESCRIBE_SC(normal_encoder)
+TMU_REGISTER_BLOCK(normal_encoder, NormalEncoderBlock,
+                   "Normal encoder (001 §4.1, eq. 12-16): (x, y, z) -> (phi, theta) by two seeded "
+                   "Newton-Raphson dividers and angle tables",
+                   "normal-encoder")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
 using deflect::EncoderConfig;
 using deflect::EncoderTrace;
+using D = desc::normal_encoder;
 
 namespace {
-
-const Schema kInputs({{"x", fmts::kUnitComp}, {"y", fmts::kUnitComp}, {"z", fmts::kUnitComp}});
-const Schema kOutputs({{"phi", fmts::kSpherePhi}, {"theta", fmts::kSphereTheta}});
 
 constexpr auto kOne = static_cast<int16_t>(1 << fmts::kUnitComp.frac_bits);  // 1.0, SQ2.14
 constexpr uint32_t kRatioOne = 1u << deflect::kRatioFrac;
 
-// The Verilated widths (rtl/CMakeLists.txt): the default and the paper's linear index.
-EncoderConfig linear_index_config() {
-  EncoderConfig c;
-  c.lut_exp = 1;
-  c.lut_mant = 7;
-  return c;
+class GoldenEncoder : public Model {
+ public:
+  explicit GoldenEncoder(std::shared_ptr<const deflect::NormalEncoder> encoder)
+      : encoder_(std::move(encoder)) {}
+  void step(const Txn& item, Sink& sink) override {
+    const deflect::SphereAngle a = encoder_->encode(normal_x(item), normal_y(item), normal_z(item));
+    Txn out;
+    out.f[D::out_phi] = a.phi;
+    out.f[D::out_theta] = a.theta;
+    sink.output(out);
+  }
+
+ private:
+  std::shared_ptr<const deflect::NormalEncoder> encoder_;
+};
+
+std::string encoder_options(const EncoderConfig& c) {
+  return fmt::format("--encoder {},{},{}", c.seed_bits, c.lut_exp, c.lut_mant);
 }
-
-class GoldenEngine : public Engine {
- public:
-  explicit GoldenEngine(const EncoderConfig& config) : encoder_(config) {}
-  std::string name() const override { return "golden"; }
-  RunResult run(const std::vector<Txn>& items, const RunOptions&) override {
-    RunResult r;
-    r.outputs.reserve(items.size());
-    const auto start = std::chrono::steady_clock::now();
-    for (const Txn& t : items) {
-      const deflect::SphereAngle a = encoder_.encode(normal_x(t), normal_y(t), normal_z(t));
-      Txn out;
-      out.f[kEncPhi] = a.phi;
-      out.f[kEncTheta] = a.theta;
-      r.outputs.push_back(out);
-    }
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.output_cycles.assign(r.outputs.size(), 0);
-    return r;
-  }
-
- private:
-  deflect::NormalEncoder encoder_;
-};
-
-// The hls module with its signals, driven by the harness's ScDriver.
-class HlsBench : public sc_core::sc_module, public ScAdapter {
- public:
-  HlsBench(sc_core::sc_module_name name, sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n,
-           const EncoderConfig& config)
-      : sc_module(name), dut_("dut", config) {
-    dut_.clk_i(clk);
-    dut_.rst_ni(rst_n);
-    dut_.in_valid_i(in_valid_);
-    dut_.in_ready_o(in_ready_);
-    dut_.in_x_i(in_x_);
-    dut_.in_y_i(in_y_);
-    dut_.in_z_i(in_z_);
-    dut_.out_valid_o(out_valid_);
-    dut_.out_ready_i(out_ready_);
-    dut_.out_phi_o(out_phi_);
-    dut_.out_theta_o(out_theta_);
-  }
-  void drive(const Txn* item) override {
-    in_valid_.write(item != nullptr);
-    in_x_.write(item ? normal_x(*item) : 0);
-    in_y_.write(item ? normal_y(*item) : 0);
-    in_z_.write(item ? normal_z(*item) : 0);
-  }
-  bool accepts(const Txn&) const override { return in_ready_.read(); }
-  void set_out_ready(bool ready) override { out_ready_.write(ready); }
-  bool out_valid() const override { return out_valid_.read(); }
-  Txn out() const override {
-    Txn t;
-    t.f[kEncPhi] = out_phi_.read();
-    t.f[kEncTheta] = out_theta_.read();
-    return t;
-  }
-
- private:
-  using Sc = hls::NormalEncoderSc;
-  Sc dut_;
-  sc_core::sc_signal<bool> in_valid_{"in_valid"}, in_ready_{"in_ready"};
-  sc_core::sc_signal<Sc::int_t<Sc::kCompW>> in_x_{"in_x"}, in_y_{"in_y"}, in_z_{"in_z"};
-  sc_core::sc_signal<bool> out_valid_{"out_valid"}, out_ready_{"out_ready"};
-  sc_core::sc_signal<Sc::uint_t<Sc::kPhiW>> out_phi_{"out_phi"};
-  sc_core::sc_signal<Sc::uint_t<Sc::kThetaW>> out_theta_{"out_theta"};
-};
-
-class HlsEngine : public Engine {
- public:
-  explicit HlsEngine(const EncoderConfig& config) : config_(config) {}
-  std::string name() const override { return "hls"; }
-  RunResult run(const std::vector<Txn>& items, const RunOptions& options) override {
-    return run_hls<HlsBench>(
-        [this](sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n) {
-          return std::make_unique<HlsBench>("bench", clk, rst_n, config_);
-        },
-        items, items.size(), options);
-  }
-
- private:
-  EncoderConfig config_;
-};
 
 int16_t saturate(double v) {
   return static_cast<int16_t>(std::clamp(std::lround(v), -32768L, 32767L));
@@ -231,15 +161,13 @@ void add_seed_index_items(int seed_bits, std::vector<Txn>& items) {
 }  // namespace
 
 Txn normal_item(int16_t x, int16_t y, int16_t z) {
-  Txn t;
-  t.f[kEncX] = static_cast<uint16_t>(x);
-  t.f[kEncY] = static_cast<uint16_t>(y);
-  t.f[kEncZ] = static_cast<uint16_t>(z);
-  return t;
+  return channel_item(
+      D::table(), "in",
+      {static_cast<uint16_t>(x), static_cast<uint16_t>(y), static_cast<uint16_t>(z)});
 }
-int16_t normal_x(const Txn& item) { return static_cast<int16_t>(item.f[kEncX]); }
-int16_t normal_y(const Txn& item) { return static_cast<int16_t>(item.f[kEncY]); }
-int16_t normal_z(const Txn& item) { return static_cast<int16_t>(item.f[kEncZ]); }
+int16_t normal_x(const Txn& item) { return static_cast<int16_t>(item.f[D::in_x]); }
+int16_t normal_y(const Txn& item) { return static_cast<int16_t>(item.f[D::in_y]); }
+int16_t normal_z(const Txn& item) { return static_cast<int16_t>(item.f[D::in_z]); }
 
 uint32_t encoder_seed_index(uint32_t den, int seed_bits) {
   if (den == 0) return 0;
@@ -254,16 +182,42 @@ std::set<uint32_t> reachable_angle_indices(const EncoderConfig& config) {
 }
 
 NormalEncoderBlock::NormalEncoderBlock(const BlockOptions& options)
-    : encoder_(options.encoder), reachable_angle_(reachable_angle_indices(options.encoder)) {
+    : DescribedBlockOf(D::table()),
+      encoder_(std::make_shared<const deflect::NormalEncoder>(options.encoder)),
+      reachable_angle_(
+          std::make_shared<const std::set<uint32_t>>(reachable_angle_indices(options.encoder))) {
   if (options.encoder.grid.phi_bits != fmts::kSpherePhi.width()) {
     throw std::invalid_argument(
-        fmt::format("normal-encoder: the ports are built for the grid A = {}, not {}",
+        fmt::format("normal_encoder: the ports are built for the grid A = {}, not {}",
                     fmts::kSpherePhi.width(), options.encoder.grid.phi_bits));
+  }
+  add_level("hls", hls_level<desc::normal_encoder_sc, hls::NormalEncoderSc>(options.encoder));
+  TMU_ADD_RTL_LEVELS(normal_encoder, variant());
+  // Widths no variant verilates have no rtl level (texsim cosim notes it); Icarus runs them
+  // with the widths as the RTL's parameters.
+  const std::vector<std::string> have = levels();
+  if (std::find(have.begin(), have.end(), "rtl") == have.end()) {
+    const EncoderConfig& c = config();
+    add_level("icarus",
+              icarus_level("tmu_normal_encoder", fmt::format("SeedBits={} LutExp={} LutMant={}",
+                                                             c.seed_bits, c.lut_exp, c.lut_mant)));
   }
 }
 
-const Schema& NormalEncoderBlock::inputs() const { return kInputs; }
-const Schema& NormalEncoderBlock::outputs() const { return kOutputs; }
+std::string NormalEncoderBlock::variant() const {
+  const EncoderConfig& c = config();
+  if (c == EncoderConfig{}) return "";
+  const std::string key = fmt::format("e{}m{}", c.lut_exp, c.lut_mant);
+  return c.seed_bits == EncoderConfig{}.seed_bits ? key : fmt::format("s{}{}", c.seed_bits, key);
+}
+
+std::string NormalEncoderBlock::repro_options() const {
+  return config() == EncoderConfig{} ? "" : encoder_options(config());
+}
+
+std::unique_ptr<Model> NormalEncoderBlock::golden() const {
+  return std::make_unique<GoldenEncoder>(encoder_);
+}
 
 std::vector<Txn> NormalEncoderBlock::directed_items() const {
   std::vector<Txn> items;
@@ -308,6 +262,12 @@ std::vector<Txn> NormalEncoderBlock::directed_items() const {
       items.push_back(normal_item(p, q, 0));
     }
   }
+  // Just off the y-z plane on the -x side (|x| < z / 256: t_phi = 0, k_phi = 0), where the
+  // expansion's 4Q - 0 must wrap to phi 0.
+  for (const auto& [x, y, z] :
+       {std::array<int16_t, 3>{-1, 0, kOne}, {-63, 5000, 16384}, {-127, -9000, 32767}}) {
+    items.push_back(normal_item(x, y, z));
+  }
   // Two equal largest components: |x| = |z| (t_phi = 1), y^2 = x^2 + z^2 from Pythagorean
   // triples (t_theta = 1), |y| = |x| with z = 0, and all three equal; each sign.
   for (int s = 0; s < 8; ++s) {
@@ -338,7 +298,7 @@ std::vector<Txn> NormalEncoderBlock::directed_items() const {
                                 static_cast<int16_t>(s & 4 ? -12000 : 12000)));
   }
   // Every angle-table index some ratio reaches (phi and theta), every seed-table index.
-  add_angle_index_items(encoder_, items);
+  add_angle_index_items(*encoder_, items);
   add_seed_index_items(config().seed_bits, items);
   return items;
 }
@@ -365,32 +325,6 @@ std::vector<Txn> NormalEncoderBlock::random_items(std::mt19937_64& rng, size_t c
     }
   }
   return items;
-}
-
-std::unique_ptr<Engine> NormalEncoderBlock::engine(const std::string& level) const {
-  if (level == "golden") return std::make_unique<GoldenEngine>(config());
-  if (level == "hls") return std::make_unique<HlsEngine>(config());
-  if (level == "rtl") {
-    if (config() == EncoderConfig{})
-      return make_normal_encoder_rtl_engine<Vtmu_normal_encoder>("rtl");
-    if (config() == linear_index_config())
-      return make_normal_encoder_rtl_engine<Vtmu_normal_encoder_e1m7>("rtl");
-    throw std::invalid_argument(fmt::format(
-        "normal-encoder: no rtl model for seed bits {}, table E {} M {} (verilated: 7/4/5 and "
-        "7/1/7; add a variant to rtl/CMakeLists.txt)",
-        config().seed_bits, config().lut_exp, config().lut_mant));
-  }
-  if (level == "icarus") {  // any widths: the testbench passes them on as parameters
-    return make_icarus_engine("icarus",
-                              {"normal_encoder_tb",
-                               "tmu_normal_encoder",
-                               {{"SeedBits", std::to_string(config().seed_bits)},
-                                {"LutExp", std::to_string(config().lut_exp)},
-                                {"LutMant", std::to_string(config().lut_mant)}}},
-                              kInputs, kOutputs);
-  }
-  throw std::invalid_argument("normal-encoder: no engine '" + level +
-                              "' (golden, hls, rtl, icarus)");
 }
 
 namespace {
@@ -442,7 +376,7 @@ void NormalEncoderBlock::cover(const std::vector<Txn>& items, size_t index, cons
   cover_next_ = index + 1;
   const int16_t x = normal_x(items[index]), y = normal_y(items[index]), z = normal_z(items[index]);
   EncoderTrace t;
-  encoder_.encode(x, y, z, &t);
+  encoder_->encode(x, y, z, &t);
   const EncoderConfig& c = config();
   const auto mag = [](int16_t v) { return static_cast<uint32_t>(std::abs(int32_t{v})); };
   const uint32_t a = mag(x), b = mag(y), cz = mag(z);
@@ -491,36 +425,16 @@ void NormalEncoderBlock::cover(const std::vector<Txn>& items, size_t index, cons
   };
   // (t = 0 reads no table entry.)
   if (t.t_phi != 0) {
-    reach(seen_angle_[0], deflect::angle_index(c, t.t_phi), reachable_angle_.size(),
+    reach(seen_angle_[0], deflect::angle_index(c, t.t_phi), reachable_angle_->size(),
           kEveryAnglePhi);
   }
   if (t.t_theta != 0) {
-    reach(seen_angle_[1], deflect::angle_index(c, t.t_theta), reachable_angle_.size(),
+    reach(seen_angle_[1], deflect::angle_index(c, t.t_theta), reachable_angle_->size(),
           kEveryAngleTheta);
   }
   const size_t seeds = size_t{1} << c.seed_bits;
   reach(seen_seed_[0], encoder_seed_index(std::max(xx, zz), c.seed_bits), seeds, kEverySeedPhi);
   reach(seen_seed_[1], encoder_seed_index(std::max(yy, hh), c.seed_bits), seeds, kEverySeedTheta);
-}
-
-std::vector<Port> NormalEncoderBlock::ports() const {
-  return {{"clk_i"},
-          {"rst_ni"},
-          {"in_valid_i"},
-          {"in_ready_o"},
-          {"in_x_i", fmts::kUnitComp.width(), true},
-          {"in_y_i", fmts::kUnitComp.width(), true},
-          {"in_z_i", fmts::kUnitComp.width(), true},
-          {"out_valid_o"},
-          {"out_ready_i"},
-          {"out_phi_o", fmts::kSpherePhi.width()},
-          {"out_theta_o", fmts::kSphereTheta.width()}};
-}
-
-std::string NormalEncoderBlock::repro_options() const {
-  const EncoderConfig& c = config();
-  if (c == EncoderConfig{}) return "";
-  return fmt::format("--encoder {},{},{}", c.seed_bits, c.lut_exp, c.lut_mant);
 }
 
 }  // namespace tmu::tb

@@ -1,29 +1,27 @@
-#include "blocks/deflect_block.hpp"
+#include "blocks/deflect/deflect_block.hpp"
 
-#include <Vtmu_deflect.h>
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "formats/formats.hpp"
-#include "harness/hls_runner.hpp"
+#include "harness/described_engines.hpp"
+#include "harness/described_hls.hpp"
 #include "hls/deflect/deflect_sc.hpp"
+#include "rtl_models_deflect.hpp"
+
+TMU_DESCRIBE_SC(deflect)
+TMU_REGISTER_BLOCK(deflect, DeflectBlock,
+                   "Bump deflection unit (001 §4.4, §6.2): phi_D - theta_N, first-octant s2s map "
+                   "through a one-block MBR, + phi_N; the map memory's requests compared")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
 using deflect::MapAccess;
 using deflect::SphereAngle;
+using D = desc::deflect;
 
 namespace {
-
-const Schema kInputs({{"normal_phi", fmts::kSpherePhi},
-                      {"normal_theta", fmts::kSphereTheta},
-                      {"bump_phi", fmts::kSpherePhi},
-                      {"bump_theta", fmts::kSphereTheta}});
-const Schema kOutputs({{"phi", fmts::kSpherePhi},
-                       {"theta", fmts::kSphereTheta},
-                       {"access", fmts::kMapAccess}});
 
 // The grid of the ports (A = 9: 512 x 256).
 const deflect::SphereGrid kGrid{fmts::kSpherePhi.width()};
@@ -41,136 +39,40 @@ uint32_t wrap_phi(int64_t steps) {
   return static_cast<uint32_t>(((steps % kPhiCount) + kPhiCount) % kPhiCount);
 }
 
-Counters golden_counters(uint64_t hits, uint64_t misses, uint64_t bypasses) {
-  return {{"hits", hits}, {"misses", misses}, {"bypasses", bypasses}, {"block_fetches", misses}};
+// The octant reduction of a request: phi' = phi_D - theta_N (modulo 4Q) and the bump's theta.
+deflect::MapAddress look_up(SphereAngle normal, SphereAngle bump) {
+  const uint32_t phi_prime = static_cast<uint32_t>(static_cast<int32_t>(bump.phi) -
+                                                   deflect::theta_steps(kGrid, normal.theta)) &
+                             kGrid.phi_mask();
+  return deflect::map_address(kGrid, phi_prime, bump.theta);
 }
 
-class GoldenEngine : public Engine {
+// The unit with its MBR over a run: every miss is a request for its block.
+class Golden : public Model {
  public:
-  explicit GoldenEngine(std::shared_ptr<const deflect::S2sMap> map) : map_(std::move(map)) {}
-  std::string name() const override { return "golden"; }
-  RunResult run(const std::vector<Txn>& items, const RunOptions&) override {
-    RunResult r;
-    r.outputs.reserve(items.size());
-    const auto start = std::chrono::steady_clock::now();
-    deflect::DeflectionUnit unit(*map_);
-    uint64_t counts[3] = {0, 0, 0};
-    for (const Txn& t : items) {
-      const deflect::Deflected d = unit.deflect(deflect_normal(t), deflect_bump(t));
-      Txn out;
-      out.f[kDflOutPhi] = d.normal.phi;
-      out.f[kDflOutTheta] = d.normal.theta;
-      out.f[kDflOutAccess] = static_cast<uint64_t>(d.access);
-      ++counts[static_cast<size_t>(d.access)];
-      r.outputs.push_back(out);
+  explicit Golden(std::shared_ptr<const deflect::S2sMap> map)
+      : map_(std::move(map)), unit_(*map_) {}
+  void step(const Txn& item, Sink& sink) override {
+    const SphereAngle normal = deflect_normal(item), bump = deflect_bump(item);
+    const deflect::Deflected d = unit_.deflect(normal, bump);
+    if (d.access == MapAccess::kMiss) {
+      Txn request;
+      request.f[D::map_req_block] = look_up(normal, bump).block;
+      sink.request(0, request);
+      ++fetches_;
     }
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.output_cycles.assign(r.outputs.size(), 0);
-    r.counters = golden_counters(counts[0], counts[1], counts[2]);
-    return r;
+    Txn out;
+    out.f[D::out_phi] = d.normal.phi;
+    out.f[D::out_theta] = d.normal.theta;
+    out.f[D::out_access] = static_cast<uint64_t>(d.access);
+    sink.output(out);
   }
+  Counters counters() const override { return {{"block_fetches", fetches_}}; }
 
  private:
   std::shared_ptr<const deflect::S2sMap> map_;
-};
-
-// The hls module with its signals, the map memory and the access monitor.
-class HlsBench : public sc_core::sc_module, public ScAdapter {
- public:
-  HlsBench(sc_core::sc_module_name name, sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n,
-           std::shared_ptr<const deflect::S2sMap> map, S2sMemoryTiming timing, uint64_t memory_seed)
-      : sc_module(name), dut_("dut"), memory_(std::move(map), timing, memory_seed) {
-    dut_.clk_i(clk);
-    dut_.rst_ni(rst_n);
-    dut_.in_valid_i(in_valid_);
-    dut_.in_ready_o(in_ready_);
-    dut_.in_normal_phi_i(in_normal_phi_);
-    dut_.in_normal_theta_i(in_normal_theta_);
-    dut_.in_bump_phi_i(in_bump_phi_);
-    dut_.in_bump_theta_i(in_bump_theta_);
-    dut_.out_valid_o(out_valid_);
-    dut_.out_ready_i(out_ready_);
-    dut_.out_phi_o(out_phi_);
-    dut_.out_theta_o(out_theta_);
-    dut_.out_access_o(out_access_);
-    dut_.map_req_valid_o(map_req_valid_);
-    dut_.map_req_block_o(map_req_block_);
-    dut_.map_resp_valid_i(map_resp_valid_);
-    dut_.map_resp_data_i(map_resp_data_);
-  }
-  void drive(const Txn* item) override {
-    in_valid_.write(item != nullptr);
-    in_normal_phi_.write(item ? item->f[kDflNormalPhi] : 0);
-    in_normal_theta_.write(item ? item->f[kDflNormalTheta] : 0);
-    in_bump_phi_.write(item ? item->f[kDflBumpPhi] : 0);
-    in_bump_theta_.write(item ? item->f[kDflBumpTheta] : 0);
-  }
-  bool accepts(const Txn&) const override { return in_ready_.read(); }
-  void set_out_ready(bool ready) override { out_ready_.write(ready); }
-  bool out_valid() const override { return out_valid_.read(); }
-  Txn out() const override {
-    Txn t;
-    t.f[kDflOutPhi] = out_phi_.read();
-    t.f[kDflOutTheta] = out_theta_.read();
-    t.f[kDflOutAccess] = out_access_.read();
-    return t;
-  }
-  void env_drive() override {
-    const S2sMemory::Inputs& in = memory_.drive();
-    map_resp_valid_.write(in.resp_valid);
-    sc_dt::sc_biguint<Dut::kBlockDataW> data = 0;
-    for (size_t w = 0; w < in.resp_words.size(); ++w) {
-      const int lo = static_cast<int>(32 * w);
-      const int hi = std::min(lo + 31, Dut::kBlockDataW - 1);
-      data.range(hi, lo) = in.resp_words[w];
-    }
-    map_resp_data_.write(data);
-  }
-  void env_sample() override {
-    memory_.sample(map_req_valid_.read(), static_cast<uint32_t>(map_req_block_.read()));
-    monitor_.sample(out_valid_.read() && out_ready_.read(), out_access_.read());
-  }
-  std::string env_error() const override { return memory_.error(); }
-  Counters counters() const override { return deflect_bench_counters(monitor_, memory_); }
-
- private:
-  using Dut = hls::DeflectSc;
-  template <int W>
-  using sig = sc_core::sc_signal<sc_dt::sc_uint<W>>;
-
-  Dut dut_;
-  S2sMemory memory_;
-  MapAccessMonitor monitor_;
-  sc_core::sc_signal<bool> in_valid_{"in_valid"}, in_ready_{"in_ready"};
-  sig<Dut::kPhiW> in_normal_phi_{"in_normal_phi"}, in_bump_phi_{"in_bump_phi"};
-  sig<Dut::kThetaW> in_normal_theta_{"in_normal_theta"}, in_bump_theta_{"in_bump_theta"};
-  sc_core::sc_signal<bool> out_valid_{"out_valid"}, out_ready_{"out_ready"};
-  sig<Dut::kPhiW> out_phi_{"out_phi"};
-  sig<Dut::kThetaW> out_theta_{"out_theta"};
-  sig<Dut::kAccessW> out_access_{"out_access"};
-  sc_core::sc_signal<bool> map_req_valid_{"map_req_valid"};
-  sig<Dut::kBlockW> map_req_block_{"map_req_block"};
-  sc_core::sc_signal<bool> map_resp_valid_{"map_resp_valid"};
-  sc_core::sc_signal<sc_dt::sc_biguint<Dut::kBlockDataW>> map_resp_data_{"map_resp_data"};
-};
-
-class HlsEngine : public Engine {
- public:
-  HlsEngine(std::shared_ptr<const deflect::S2sMap> map, S2sMemoryTiming timing)
-      : map_(std::move(map)), timing_(timing) {}
-  std::string name() const override { return "hls"; }
-  RunResult run(const std::vector<Txn>& items, const RunOptions& options) override {
-    return run_hls<HlsBench>(
-        [&](sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n) {
-          return std::make_unique<HlsBench>("bench", clk, rst_n, map_, timing_,
-                                            options.stalls.seed ^ kS2sMemorySeedSalt);
-        },
-        items, items.size(), options);
-  }
-
- private:
-  std::shared_ptr<const deflect::S2sMap> map_;
-  S2sMemoryTiming timing_;
+  deflect::DeflectionUnit unit_;
+  uint64_t fetches_ = 0;
 };
 
 // Items named by what the look-up sees: phi' (steps, taken modulo 4Q) and the bump's theta,
@@ -191,12 +93,7 @@ int64_t phi_prime_of(int quadrant, int32_t k) {
 // ---- Items -------------------------------------------------------------------------------
 
 Txn deflect_item(SphereAngle normal, SphereAngle bump) {
-  Txn t;
-  t.f[kDflNormalPhi] = normal.phi;
-  t.f[kDflNormalTheta] = normal.theta;
-  t.f[kDflBumpPhi] = bump.phi;
-  t.f[kDflBumpTheta] = bump.theta;
-  return kInputs.masked(t);
+  return channel_item(D::table(), "in", {normal.phi, normal.theta, bump.phi, bump.theta});
 }
 
 Txn deflect_steps_item(uint32_t normal_phi, int32_t normal_theta, uint32_t bump_phi,
@@ -208,12 +105,26 @@ Txn deflect_steps_item(uint32_t normal_phi, int32_t normal_theta, uint32_t bump_
 }
 
 SphereAngle deflect_normal(const Txn& item) {
-  return {static_cast<uint32_t>(item.f[kDflNormalPhi]),
-          static_cast<uint32_t>(item.f[kDflNormalTheta])};
+  return {static_cast<uint32_t>(item.f[D::in_normal_phi]),
+          static_cast<uint32_t>(item.f[D::in_normal_theta])};
 }
 
 SphereAngle deflect_bump(const Txn& item) {
-  return {static_cast<uint32_t>(item.f[kDflBumpPhi]), static_cast<uint32_t>(item.f[kDflBumpTheta])};
+  return {static_cast<uint32_t>(item.f[D::in_bump_phi]),
+          static_cast<uint32_t>(item.f[D::in_bump_theta])};
+}
+
+SphereAngle deflect_output(const Txn& output) {
+  return {static_cast<uint32_t>(output.f[D::out_phi]),
+          static_cast<uint32_t>(output.f[D::out_theta])};
+}
+
+Counters map_access_counters(const std::vector<Txn>& outputs) {
+  uint64_t n[3] = {0, 0, 0};
+  for (const Txn& t : outputs) {
+    if (t.f[D::out_access] < 3) ++n[t.f[D::out_access]];
+  }
+  return {{"hits", n[0]}, {"misses", n[1]}, {"bypasses", n[2]}};
 }
 
 std::vector<Txn> deflect_coherent_items(std::mt19937_64& rng, size_t count) {
@@ -249,7 +160,8 @@ std::vector<Txn> deflect_coherent_items(std::mt19937_64& rng, size_t count) {
 // ---- The block ---------------------------------------------------------------------------
 
 DeflectBlock::DeflectBlock(const BlockOptions& options)
-    : map_(std::make_shared<const deflect::S2sMap>(kGrid)),
+    : DescribedBlockOf(D::table()),
+      map_(std::make_shared<const deflect::S2sMap>(kGrid)),
       timing_{options.dfl_map_latency, options.dfl_map_jitter} {
   if (timing_.latency < 1 || timing_.latency > 1000 || timing_.jitter < 0 ||
       timing_.jitter > 1000) {
@@ -257,10 +169,9 @@ DeflectBlock::DeflectBlock(const BlockOptions& options)
         fmt::format("deflect: map memory latency {} (1..1000) and jitter {} (0..1000)",
                     timing_.latency, timing_.jitter));
   }
+  add_level("hls", hls_level<desc::deflect_sc, hls::DeflectSc>());
+  TMU_ADD_RTL_LEVELS(deflect, variant());
 }
-
-const Schema& DeflectBlock::inputs() const { return kInputs; }
-const Schema& DeflectBlock::outputs() const { return kOutputs; }
 
 std::string DeflectBlock::repro_options() const {
   std::string out;
@@ -376,11 +287,10 @@ std::vector<Txn> DeflectBlock::random_items(std::mt19937_64& rng, size_t count) 
   return items;
 }
 
-std::unique_ptr<Engine> DeflectBlock::engine(const std::string& level) const {
-  if (level == "golden") return std::make_unique<GoldenEngine>(map_);
-  if (level == "hls") return std::make_unique<HlsEngine>(map_, timing_);
-  if (level == "rtl") return make_deflect_rtl_engine<Vtmu_deflect>("rtl", map_, timing_);
-  throw std::invalid_argument("deflect: no engine '" + level + "' (golden, hls, rtl)");
+std::unique_ptr<Model> DeflectBlock::golden() const { return std::make_unique<Golden>(map_); }
+
+std::unique_ptr<Environment> DeflectBlock::environment(uint64_t seed) const {
+  return std::make_unique<S2sMemory>(map_, timing_, seed);
 }
 
 std::vector<std::string> DeflectBlock::coverage_cases() const {
@@ -420,9 +330,9 @@ void DeflectBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&
   const SphereAngle normal = deflect_normal(items[index]), bump = deflect_bump(items[index]);
   const int64_t phi_prime_steps = int64_t{bump.phi} - deflect::theta_steps(kGrid, normal.theta);
   const auto phi_prime = static_cast<uint32_t>(wrap_phi(phi_prime_steps));
-  const deflect::MapAddress a = deflect::map_address(kGrid, phi_prime, bump.theta);
+  const deflect::MapAddress a = look_up(normal, bump);
   const bool bypass = a.k == kGrid.quarter();
-  const auto access = static_cast<MapAccess>(output.f[kDflOutAccess]);
+  const auto access = static_cast<MapAccess>(output.f[D::out_access]);
   const uint32_t top = kGrid.quarter() - 1;
 
   ++cov[access == MapAccess::kHit    ? "access: hit"
@@ -471,27 +381,6 @@ void DeflectBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&
   cover_prev2_ = cover_prev_;
   cover_prev_ = {true, bypass, a.block, access};
   cover_next_ = index + 1;
-}
-
-std::vector<Port> DeflectBlock::ports() const {
-  const int phi = fmts::kSpherePhi.width(), theta = fmts::kSphereTheta.width();
-  return {{"clk_i"},
-          {"rst_ni"},
-          {"in_valid_i"},
-          {"in_ready_o"},
-          {"in_normal_phi_i", phi},
-          {"in_normal_theta_i", theta},
-          {"in_bump_phi_i", phi},
-          {"in_bump_theta_i", theta},
-          {"out_valid_o"},
-          {"out_ready_i"},
-          {"out_phi_o", phi},
-          {"out_theta_o", theta},
-          {"out_access_o", fmts::kMapAccess.width()},
-          {"map_req_valid_o"},
-          {"map_req_block_o", fmts::kS2sBlockAddr.width()},
-          {"map_resp_valid_i"},
-          {"map_resp_data_i", fmts::kS2sBlockEntries * fmts::kS2sEntry.width()}};
 }
 
 }  // namespace tmu::tb

@@ -1,50 +1,48 @@
-// The bump deflection unit with its MBR as a co-simulation block (`texsim cosim deflect`):
+// The bump deflection unit with its MBR as a co-simulation block, `texsim cosim deflect`:
 // phi' = phi_D - theta_N, the octant reduction, one look-up of the first-octant
 // spherical-to-spherical map through a one-block memory buffer register, the z = 0 column in
-// closed form, the expansion and + phi_N (001 §4.4, §6.2; golden/deflect/s2s_map.hpp).
+// closed form, the expansion and + phi_N (001 §4.4, §6.2; golden/deflect/s2s_map.hpp,
+// rtl/deflect/tmu_deflect.sv, hls/deflect/deflect_sc.hpp).
 //
 // Input items: the normal (normal_phi: SpherePhi, normal_theta: SphereTheta) and the bump
 // texel (bump_phi, bump_theta). Output: the deflected normal (phi, theta) and the access
 // (MapAccess: 0 hit, 1 miss, 2 bypass), so the cache's behaviour is compared bit for bit.
-// Counters: hits, misses, bypasses (of the results), block_fetches (the map memory's
-// requests); the hls and rtl runs add stall_cycles, the cycles a look-up waited for a block.
+// Every miss requests its block from the map memory: golden predicts each request (the block
+// address, in order) and its count, block_fetches; the timed runs add stall_cycles, the
+// cycles a look-up waited for a block.
 //
 // The environment is the map (grid A = 9, computed once) in the map memory S2sMemory
-// (tb/blocks/s2s_memory.hpp), which answers after BlockOptions::dfl_map_latency cycles plus
-// 0..dfl_map_jitter drawn from the seed; the golden model reads the map directly.
+// (tb/blocks/deflect/s2s_memory.hpp), which answers after BlockOptions::dfl_map_latency
+// cycles plus 0..dfl_map_jitter drawn from the run's seed.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <random>
 #include <string>
+#include <vector>
 
+#include "blocks/deflect/deflect_ports.hpp"
+#include "blocks/deflect/s2s_memory.hpp"
 #include "blocks/registry.hpp"
-#include "blocks/s2s_memory.hpp"
 #include "deflect/s2s_map.hpp"
-#include "harness/block.hpp"
-#include "harness/rtl_runner.hpp"
+#include "harness/describe.hpp"
+#include "harness/described_block.hpp"
+
+TMU_DESCRIBE(deflect)
 
 namespace tmu::tb {
 
-enum DeflectField { kDflNormalPhi, kDflNormalTheta, kDflBumpPhi, kDflBumpTheta };
-enum DeflectOutField { kDflOutPhi, kDflOutTheta, kDflOutAccess };
-
-class DeflectBlock : public Block {
+class DeflectBlock : public DescribedBlockOf<DeflectBlock> {
  public:
-  explicit DeflectBlock(const BlockOptions& options);
-
-  std::string name() const override { return "deflect"; }
-  const Schema& inputs() const override;
-  const Schema& outputs() const override;
-  bool produces_output(const Txn&) const override { return true; }
+  explicit DeflectBlock(const BlockOptions& options = {});
   std::vector<Txn> directed_items() const override;
   std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Engine> engine(const std::string& level) const override;
+  std::unique_ptr<Model> golden() const override;
+  std::unique_ptr<Environment> environment(uint64_t seed) const override;
   std::vector<std::string> coverage_cases() const override;
   void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
              Coverage& coverage) const override;
-  std::vector<Port> ports() const override;
   std::string repro_options() const override;
 
   const std::shared_ptr<const deflect::S2sMap>& map() const { return map_; }
@@ -72,17 +70,15 @@ Txn deflect_steps_item(uint32_t normal_phi, int32_t normal_theta, uint32_t bump_
                        int32_t bump_theta);
 deflect::SphereAngle deflect_normal(const Txn& item);
 deflect::SphereAngle deflect_bump(const Txn& item);
+// The deflected normal of an output.
+deflect::SphereAngle deflect_output(const Txn& output);
 
 // Slowly varying normals and bumps, like a rasterizer's scanline over a bump-mapped surface:
 // runs of 16..256 items whose angles move by at most a step at a time. Mostly hits.
 std::vector<Txn> deflect_coherent_items(std::mt19937_64& rng, size_t count);
 
-// The rtl engine for any Verilated model with the unit's ports (tests use mutants).
-template <class Model>
-std::unique_ptr<Engine> make_deflect_rtl_engine(const std::string& name,
-                                                std::shared_ptr<const deflect::S2sMap> map,
-                                                S2sMemoryTiming timing);
+// The MBR's hits, misses and bypasses of a run, counted from its outputs' access codes (what a
+// render reports of its deflection units).
+Counters map_access_counters(const std::vector<Txn>& outputs);
 
 }  // namespace tmu::tb
-
-#include "blocks/deflect_rtl.inl"

@@ -1,19 +1,25 @@
-#include "blocks/coord_gen_block.hpp"
+#include "blocks/coord_gen/coord_gen_block.hpp"
 
-#include <Vtmu_coord_gen.h>
-#include <Vtmu_coord_gen_a7w8.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
 #include <stdexcept>
 
 #include "formats/formats.hpp"
-#include "harness/hls_runner.hpp"
+#include "harness/described_engines.hpp"
+#include "harness/described_hls.hpp"
 #include "hls/deflect/coord_gen_sc.hpp"
+#include "rtl_models_coord_gen.hpp"
+
+TMU_DESCRIBE_SC(coord_gen)
+TMU_REGISTER_BLOCK(coord_gen, CoordGenBlock,
+                   "Shading/environment-map coordinates (001 §5, eq. 17-22): seven tables -> uN, "
+                   "vN, uR, vR, wR",
+                   "coord-gen")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -23,20 +29,9 @@ using deflect::MapCoords;
 using deflect::SphereAngle;
 using deflect::TableConfig;
 using deflect::ViewFrame;
+using D = desc::coord_gen;
 
 namespace {
-
-const Schema kInputs({{"op", fx::UQ(1, 0)},
-                      {"table", fmts::kCoordTableId},
-                      {"addr", fmts::kCoordTableAddr},
-                      {"value", fmts::kCoordValue},
-                      {"phi", fmts::kSpherePhi},
-                      {"theta", fmts::kSphereTheta}});
-const Schema kOutputs({{"un", fmts::kUnitComp},
-                       {"vn", fmts::kUnitComp},
-                       {"ur", fmts::kUnitComp},
-                       {"vr", fmts::kUnitComp},
-                       {"wr", fmts::kUnitComp}});
 
 constexpr uint64_t kCompMask = (uint64_t{1} << fmts::kUnitComp.width()) - 1;
 constexpr int32_t kCompMax = static_cast<int32_t>(fmts::kUnitComp.max_raw());
@@ -44,12 +39,6 @@ constexpr int32_t kCompMin = static_cast<int32_t>(fmts::kUnitComp.min_raw());
 constexpr int32_t kOne = 1 << fmts::kUnitComp.frac_bits;
 // Random items: a reload of every table from a new frame in the middle of every this many.
 constexpr size_t kReloadPeriod = 16384;
-
-size_t count_requests(const std::vector<Txn>& items) {
-  size_t n = 0;
-  for (const Txn& t : items) n += t.f[kCgOp] == kCgOpRequest;
-  return n;
-}
 
 int32_t limit(const TableConfig& c) { return (1 << (c.value_bits - 1)) - 1; }
 uint32_t entries(const TableConfig& c) { return 10 * c.grid.quarter(); }  // 3 x 2Q + 4 x Q
@@ -61,21 +50,22 @@ int32_t largest_dot(const TableConfig& c) {
   return static_cast<int32_t>(shift == 0 ? sum : (sum + (int64_t{1} << (shift - 1))) >> shift);
 }
 
+bool is_write(const Txn& t) { return t.f[0] == D::op_tw; }
 deflect::TableWrite table_write(const Txn& t) {
-  return {static_cast<uint8_t>(t.f[kCgTable]), static_cast<uint32_t>(t.f[kCgAddr]),
-          static_cast<int32_t>(t.f[kCgValue])};  // raw port bits: the memory takes the low W
+  return {static_cast<uint8_t>(t.f[D::tw_table]), static_cast<uint32_t>(t.f[D::tw_addr]),
+          static_cast<int32_t>(t.f[D::tw_value])};  // raw port bits: the memory takes the low W
 }
 SphereAngle request_angle(const Txn& t) {
-  return {static_cast<uint32_t>(t.f[kCgPhi]), static_cast<uint32_t>(t.f[kCgTheta])};
+  return {static_cast<uint32_t>(t.f[D::in_phi]), static_cast<uint32_t>(t.f[D::in_theta])};
 }
 
 Txn output_txn(const MapCoords& c) {
   Txn t;
-  t.f[kCgUn] = static_cast<uint64_t>(c.un) & kCompMask;
-  t.f[kCgVn] = static_cast<uint64_t>(c.vn) & kCompMask;
-  t.f[kCgUr] = static_cast<uint64_t>(c.ur) & kCompMask;
-  t.f[kCgVr] = static_cast<uint64_t>(c.vr) & kCompMask;
-  t.f[kCgWr] = static_cast<uint64_t>(c.wr) & kCompMask;
+  t.f[D::out_un] = static_cast<uint64_t>(c.un) & kCompMask;
+  t.f[D::out_vn] = static_cast<uint64_t>(c.vn) & kCompMask;
+  t.f[D::out_ur] = static_cast<uint64_t>(c.ur) & kCompMask;
+  t.f[D::out_vr] = static_cast<uint64_t>(c.vr) & kCompMask;
+  t.f[D::out_wr] = static_cast<uint64_t>(c.wr) & kCompMask;
   return t;
 }
 int32_t comp(const Txn& out, int field) {
@@ -83,113 +73,25 @@ int32_t comp(const Txn& out, int field) {
   return raw > kCompMax ? raw - (kCompMax - kCompMin + 1) : raw;
 }
 
-class GoldenEngine : public Engine {
+// The tables as the port loaded them: a request is evaluated on the writes before it.
+class Golden : public Model {
  public:
-  explicit GoldenEngine(const TableConfig& config) : config_(config) {}
-  std::string name() const override { return "golden"; }
-  RunResult run(const std::vector<Txn>& items, const RunOptions&) override {
-    RunResult r;
-    r.outputs.reserve(count_requests(items));
-    const auto start = std::chrono::steady_clock::now();
-    deflect::CoordTableMemory tables(config_);
-    for (const Txn& t : items) {
-      if (t.f[kCgOp] == kCgOpWrite) {
-        tables.write(table_write(t));
-      } else {
-        r.outputs.push_back(output_txn(tables.eval(request_angle(t))));
-      }
+  explicit Golden(const TableConfig& config) : tables_(config) {}
+  void step(const Txn& item, Sink& sink) override {
+    if (is_write(item)) {
+      tables_.write(table_write(item));
+    } else {
+      sink.output(output_txn(tables_.eval(request_angle(item))));
     }
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.output_cycles.assign(r.outputs.size(), 0);
-    return r;
   }
 
  private:
-  TableConfig config_;
+  deflect::CoordTableMemory tables_;
 };
 
-// The hls module with its signals, driven by the harness's ScDriver.
-class HlsBench : public sc_core::sc_module, public ScAdapter {
- public:
-  HlsBench(sc_core::sc_module_name name, sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n,
-           const TableConfig& config)
-      : sc_module(name), dut_("dut", config) {
-    dut_.clk_i(clk);
-    dut_.rst_ni(rst_n);
-    dut_.tw_valid_i(tw_valid_);
-    dut_.tw_ready_o(tw_ready_);
-    dut_.tw_table_i(tw_table_);
-    dut_.tw_addr_i(tw_addr_);
-    dut_.tw_value_i(tw_value_);
-    dut_.in_valid_i(in_valid_);
-    dut_.in_ready_o(in_ready_);
-    dut_.in_phi_i(in_phi_);
-    dut_.in_theta_i(in_theta_);
-    dut_.out_valid_o(out_valid_);
-    dut_.out_ready_i(out_ready_);
-    dut_.out_un_o(out_[kCgUn]);
-    dut_.out_vn_o(out_[kCgVn]);
-    dut_.out_ur_o(out_[kCgUr]);
-    dut_.out_vr_o(out_[kCgVr]);
-    dut_.out_wr_o(out_[kCgWr]);
-  }
-  void drive(const Txn* item) override {
-    const bool write = item && item->f[kCgOp] == kCgOpWrite;
-    const bool request = item && item->f[kCgOp] == kCgOpRequest;
-    tw_valid_.write(write);
-    tw_table_.write(write ? item->f[kCgTable] : 0);
-    tw_addr_.write(write ? item->f[kCgAddr] : 0);
-    tw_value_.write(write ? static_cast<int64_t>(item->f[kCgValue]) : 0);  // wraps to 10 bits
-    in_valid_.write(request);
-    in_phi_.write(request ? item->f[kCgPhi] : 0);
-    in_theta_.write(request ? item->f[kCgTheta] : 0);
-  }
-  bool accepts(const Txn& item) const override {
-    return item.f[kCgOp] == kCgOpWrite ? tw_ready_.read() : in_ready_.read();
-  }
-  void set_out_ready(bool ready) override { out_ready_.write(ready); }
-  bool out_valid() const override { return out_valid_.read(); }
-  Txn out() const override {
-    Txn t;
-    for (size_t k = 0; k < out_.size(); ++k) {
-      t.f[k] = static_cast<uint64_t>(out_[k].read().to_int64()) & kCompMask;
-    }
-    return t;
-  }
-
- private:
-  template <int W>
-  using sig = sc_core::sc_signal<sc_dt::sc_uint<W>>;
-  template <int W>
-  using ssig = sc_core::sc_signal<sc_dt::sc_int<W>>;
-  hls::CoordGenSc dut_;
-  sc_core::sc_signal<bool> tw_valid_{"tw_valid"}, tw_ready_{"tw_ready"};
-  sig<fmts::kCoordTableId.width()> tw_table_{"tw_table"};
-  sig<fmts::kCoordTableAddr.width()> tw_addr_{"tw_addr"};
-  ssig<fmts::kCoordValue.width()> tw_value_{"tw_value"};
-  sc_core::sc_signal<bool> in_valid_{"in_valid"}, in_ready_{"in_ready"};
-  sig<fmts::kSpherePhi.width()> in_phi_{"in_phi"};
-  sig<fmts::kSphereTheta.width()> in_theta_{"in_theta"};
-  sc_core::sc_signal<bool> out_valid_{"out_valid"}, out_ready_{"out_ready"};
-  std::array<ssig<fmts::kUnitComp.width()>, 5> out_;
-};
-
-class HlsEngine : public Engine {
- public:
-  explicit HlsEngine(const TableConfig& config) : config_(config) {}
-  std::string name() const override { return "hls"; }
-  RunResult run(const std::vector<Txn>& items, const RunOptions& options) override {
-    const TableConfig config = config_;
-    return run_hls<HlsBench>(
-        [config](sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n) {
-          return std::make_unique<HlsBench>("bench", clk, rst_n, config);
-        },
-        items, count_requests(items), options);
-  }
-
- private:
-  TableConfig config_;
-};
+std::string tables_options(const TableConfig& c) {
+  return fmt::format("--coord-tables {},{}", c.grid.phi_bits, c.value_bits);
+}
 
 // A unit vector uniformly on the sphere from two draws in [0, 1).
 std::array<double, 3> unit_vector(double a, double b) {
@@ -235,20 +137,11 @@ void append(std::vector<Txn>& to, const std::vector<Txn>& from) {
 }  // namespace
 
 Txn coord_write_item(uint8_t table, uint32_t address, int32_t value) {
-  Txn t;
-  t.f[kCgOp] = kCgOpWrite;
-  t.f[kCgTable] = table & 7u;
-  t.f[kCgAddr] = address & 0xFFu;
-  t.f[kCgValue] = static_cast<uint64_t>(value) & ((uint64_t{1} << fmts::kCoordValue.width()) - 1);
-  return t;
+  return channel_item(D::table(), "tw", {table, address, static_cast<uint32_t>(value)});
 }
 
 Txn coord_request_item(uint32_t phi, uint32_t theta) {
-  Txn t;
-  t.f[kCgOp] = kCgOpRequest;
-  t.f[kCgPhi] = phi & ((1u << fmts::kSpherePhi.width()) - 1);
-  t.f[kCgTheta] = theta & ((1u << fmts::kSphereTheta.width()) - 1);
-  return t;
+  return channel_item(D::table(), "in", {phi, theta});
 }
 
 std::vector<Txn> coord_load_items(const CoordTables& tables) {
@@ -280,11 +173,37 @@ ViewFrame random_view_frame(std::mt19937_64& rng) {
   return f;
 }
 
-CoordGenBlock::CoordGenBlock(uint64_t seed, const TableConfig& config)
-    : seed_(seed), config_(config) {}
+CoordGenBlock::CoordGenBlock(const BlockOptions& options)
+    : DescribedBlockOf(D::table()), seed_(options.seed), config_(options.coord_tables) {
+  const TableConfig& c = config_;
+  if (c.grid.phi_bits < 6 || c.grid.phi_bits > fmts::kSpherePhi.width() || c.value_bits < 8 ||
+      c.value_bits > fmts::kCoordValue.width()) {
+    throw std::invalid_argument(fmt::format(
+        "coord_gen: tables of grid A = {} and W = {} bits (the ports take A 6..{}, W 8..{})",
+        c.grid.phi_bits, c.value_bits, fmts::kSpherePhi.width(), fmts::kCoordValue.width()));
+  }
+  add_level("hls", hls_level<desc::coord_gen_sc, hls::CoordGenSc>(config_));
+  TMU_ADD_RTL_LEVELS(coord_gen, variant());
+  // Tables no variant verilates have no rtl level (texsim cosim notes it); Icarus runs them
+  // with the grid and width as the RTL's parameters.
+  const std::vector<std::string> have = levels();
+  if (std::find(have.begin(), have.end(), "rtl") == have.end()) {
+    add_level("icarus", icarus_level("tmu_coord_gen", fmt::format("PhiBits={} ValueBits={}",
+                                                                  c.grid.phi_bits, c.value_bits)));
+  }
+}
 
-const Schema& CoordGenBlock::inputs() const { return kInputs; }
-const Schema& CoordGenBlock::outputs() const { return kOutputs; }
+std::string CoordGenBlock::variant() const {
+  return config_ == TableConfig{}
+             ? ""
+             : fmt::format("a{}w{}", config_.grid.phi_bits, config_.value_bits);
+}
+
+std::string CoordGenBlock::repro_options() const {
+  return config_ == TableConfig{} ? "" : tables_options(config_);
+}
+
+std::unique_ptr<Model> CoordGenBlock::golden() const { return std::make_unique<Golden>(config_); }
 
 std::vector<Txn> CoordGenBlock::setup_items() const {
   // Every entry (the tables have no reset), from the seed's view frame.
@@ -395,20 +314,6 @@ std::vector<Txn> CoordGenBlock::random_items(std::mt19937_64& rng, size_t count)
   return items;
 }
 
-std::unique_ptr<Engine> CoordGenBlock::engine(const std::string& level) const {
-  if (level == "golden") return std::make_unique<GoldenEngine>(config_);
-  if (level == "hls") return std::make_unique<HlsEngine>(config_);
-  if (level == "rtl" && config_ == TableConfig{}) {
-    return make_coord_gen_rtl_engine<Vtmu_coord_gen>("rtl");
-  }
-  if (level == "rtl" && config_ == kCoordGenSmallConfig) {
-    return make_coord_gen_rtl_engine<Vtmu_coord_gen_a7w8>("rtl");
-  }
-  if (level == "rtl")
-    throw std::invalid_argument("coord-gen: no rtl model for this grid and width");
-  throw std::invalid_argument("coord-gen: no engine '" + level + "' (golden, hls, rtl)");
-}
-
 std::vector<std::string> CoordGenBlock::coverage_cases() const {
   return {"theta +0",
           "theta -0 (input)",
@@ -448,7 +353,7 @@ void CoordGenBlock::cover(const std::vector<Txn>& items, size_t index, const Txn
   }
   for (; st.next < index; ++st.next) {
     const Txn& t = items[st.next];
-    if (t.f[kCgOp] == kCgOpRequest) {
+    if (!is_write(t)) {
       st.writes_since_request = 0;
       st.min_value_written = st.ignored_write = false;
       continue;
@@ -485,7 +390,7 @@ void CoordGenBlock::cover(const std::vector<Txn>& items, size_t index, const Txn
   }
   if (at_max) ++cov["entry +(2^(W-1)-1) read"];
   if (at_min) ++cov["entry -(2^(W-1)-1) read"];
-  if (index > 0 && items[index - 1].f[kCgOp] == kCgOpWrite) {
+  if (index > 0 && is_write(items[index - 1])) {
     ++cov["request right after a write"];
     const deflect::TableWrite w = table_write(items[index - 1]);
     if (w.table < deflect::kCoordTableCount) {
@@ -495,7 +400,7 @@ void CoordGenBlock::cover(const std::vector<Txn>& items, size_t index, const Txn
       }
     }
   }
-  if (index + 1 < items.size() && items[index + 1].f[kCgOp] == kCgOpWrite) {
+  if (index + 1 < items.size() && is_write(items[index + 1])) {
     const deflect::TableWrite w = table_write(items[index + 1]);
     if (w.table < deflect::kCoordTableCount) {
       const auto table = static_cast<CoordTable>(w.table);
@@ -508,8 +413,9 @@ void CoordGenBlock::cover(const std::vector<Txn>& items, size_t index, const Txn
   if (st.min_value_written) ++cov["-2^(W-1) written (stored as limit)"];
   if (st.ignored_write) ++cov["write beyond the tables (ignored)"];
 
-  const int32_t un = comp(output, kCgUn), vn = comp(output, kCgVn);
-  const int32_t ur = comp(output, kCgUr), vr = comp(output, kCgVr), wr = comp(output, kCgWr);
+  const int32_t un = comp(output, D::out_un), vn = comp(output, D::out_vn);
+  const int32_t ur = comp(output, D::out_ur), vr = comp(output, D::out_vr);
+  const int32_t wr = comp(output, D::out_wr);
   // Only tables with every entry read at the limit give it (a frame's normal has length 1).
   if (std::max(std::abs(un), std::abs(vn)) == largest_dot(c)) ++cov["|uN| or |vN| at its largest"];
   if (ur == kCompMax) ++cov["uR saturated high"];
@@ -520,31 +426,9 @@ void CoordGenBlock::cover(const std::vector<Txn>& items, size_t index, const Txn
   if (wr == -kOne) ++cov["wR = -1 (hN = 0)"];
 }
 
-std::vector<Port> CoordGenBlock::ports() const {
-  const int comp_w = fmts::kUnitComp.width();
-  return {{"clk_i"},
-          {"rst_ni"},
-          {"tw_valid_i"},
-          {"tw_ready_o"},
-          {"tw_table_i", fmts::kCoordTableId.width()},
-          {"tw_addr_i", fmts::kCoordTableAddr.width()},
-          {"tw_value_i", fmts::kCoordValue.width(), true},
-          {"in_valid_i"},
-          {"in_ready_o"},
-          {"in_phi_i", fmts::kSpherePhi.width()},
-          {"in_theta_i", fmts::kSphereTheta.width()},
-          {"out_valid_o"},
-          {"out_ready_i"},
-          {"out_un_o", comp_w, true},
-          {"out_vn_o", comp_w, true},
-          {"out_ur_o", comp_w, true},
-          {"out_vr_o", comp_w, true},
-          {"out_wr_o", comp_w, true}};
-}
-
 MapCoords coord_gen_output(const Txn& output) {
-  return {comp(output, kCgUn), comp(output, kCgVn), comp(output, kCgUr), comp(output, kCgVr),
-          comp(output, kCgWr)};
+  return {comp(output, D::out_un), comp(output, D::out_vn), comp(output, D::out_ur),
+          comp(output, D::out_vr), comp(output, D::out_wr)};
 }
 
 }  // namespace tmu::tb
