@@ -92,7 +92,11 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"normal_encoder", "normal-encoder", 2000, {}},
                       // widths that are not verilated: the testbench's parameters
                       Case{"normal_encoder_8_3_6", "normal-encoder", 1000, encoder(8, 3, 6)},
-                      Case{"cube_map", "cube-map", 2000, {}}),
+                      Case{"cube_map", "cube-map", 2000, {}},
+                      // after the setup's 268 writes (registers and both tables)
+                      Case{"material_pipelined", "material", 300, {}},
+                      Case{"material_shared", "material", 300, shared_fractal()},
+                      Case{"material_fire", "material_fire", 2000, {}}),
     [](const ::testing::TestParamInfo<Case>& test) { return test.param.name; });
 
 // The comparison has teeth: the specular combine's sum wraps instead of saturating at 255

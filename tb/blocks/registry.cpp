@@ -8,7 +8,6 @@
 #include "blocks/cube_map_block.hpp"
 #include "blocks/deflect_block.hpp"
 #include "blocks/footprint_block.hpp"
-#include "blocks/material_block.hpp"
 #include "blocks/mipgen_block.hpp"
 #include "blocks/normal_encoder_block.hpp"
 #include "blocks/specular_combine_block.hpp"
@@ -81,10 +80,6 @@ std::vector<BlockInfo> block_list() {
       {"specular-combine",
        "Specular combine (000 §7 eq. 6, §8 eq. 7): per channel min(255, D + E R / 255), "
        "alpha from D",
-       {}},
-      {"material",
-       "Material unit (002 §4.2): registers and colour tables behind a write port; (u, v, "
-       "w) -> shape -> fractal sums -> marble, wood, brick, fog, cloud, fire RGB888",
        {}}};
   for (BlockInfo& b : old) out.push_back(std::move(b));
   return out;
@@ -115,7 +110,6 @@ std::unique_ptr<Block> make_block(const std::string& name_or_alias, const BlockO
   if (name == "deflect") return std::make_unique<DeflectBlock>(options);
   if (name == "normal-encoder") return std::make_unique<NormalEncoderBlock>(options);
   if (name == "specular-combine") return std::make_unique<SpecularCombineBlock>();
-  if (name == "material") return std::make_unique<MaterialBlock>(options);
   std::string known;
   for (const BlockInfo& b : block_list()) known += (known.empty() ? "" : ", ") + b.name;
   throw std::invalid_argument("unknown block '" + name_or_alias + "' (blocks: " + known + ")");

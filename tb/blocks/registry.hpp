@@ -51,7 +51,7 @@ struct BlockOptions {
   // normal-encoder: the encoder's seed and angle-table widths (grid A = 9, the ports'); the
   // rtl engine is verilated at the default and at the paper's linear index E = 1, M = 7.
   deflect::EncoderConfig encoder;
-  // turbulence, material: the fractal sums on one noise unit shared by the four octaves (one
+  // fractal, material: the fractal sums on one noise unit shared by the four octaves (one
   // sample per 4 clocks, the thesis's design) instead of four pipelined units (one per clock).
   bool fractal_shared = false;
 };

@@ -1,10 +1,12 @@
 // `texsim cosim BLOCK`: golden vs hls vs rtl, bit for bit, under random back-pressure.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 
 #include "blocks/registry.hpp"
 #include "harness/cosim.hpp"
+#include "harness/described_block.hpp"
 #include "texsim/commands.hpp"
 #include "texsim/cosim_options.hpp"
 
@@ -21,9 +23,18 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
   }
   auto* cmd = app.add_subcommand("cosim", blocks_help);
   const auto args = add_cosim_options(*cmd);
-  cmd->callback([args, &exit_code] {
-    const CosimRequest r = finish(*args);
+  cmd->callback([cmd, args, &exit_code] {
+    CosimRequest r = finish(*args);
     const auto block = tb::make_block(r.block, r.block_options);
+    // Without --engines, the default levels the block has: a combinational table without an
+    // hls model (material_fire) runs rtl alone.
+    const auto* described = dynamic_cast<const tb::DescribedBlock*>(block.get());
+    if (described && cmd->get_option("--engines")->count() == 0) {
+      const std::vector<std::string> levels = described->levels();
+      std::erase_if(r.cosim.engines, [&levels](const std::string& e) {
+        return std::find(levels.begin(), levels.end(), e) == levels.end();
+      });
+    }
     const tb::CosimResult result = tb::run_cosim(*block, r.cosim, std::cout);
     exit_code.value = result.pass ? 0 : 1;
   });
