@@ -211,7 +211,8 @@ tmu_block(material VARIANT shared OPTIONS "--fractal shared" ARGS -GSharedFracta
 tmu_mutant(material brick FILE perlin/tmu_material.sv
   FROM "assign even_row  = !row_bit;" TO "assign even_row  = row_bit;"
   WHY "the half-brick shift on the odd rows instead of the even ones")
-tmu_mutant(material fire FILE perlin/tmu_material.sv
+# (fire_clamp, not fire: the test Mutant.IsCaught/material_fire would read as block material_fire.)
+tmu_mutant(material fire_clamp FILE perlin/tmu_material.sv
   FROM "fire_sum < 0 ? '0 : (fire_sum > $signed(FireW'(2**IW - 1)) ? '1 : fire_sum[IW-1:0])"
   TO "fire_sum[IW-1:0]"
   WHY "fire's index wraps mod 2^15 instead of saturating at 0 and 2^15 - 1")
@@ -222,7 +223,7 @@ tmu_mutant(material unreset FILE perlin/tmu_material.sv EXPECT x-leak
 # (Both variants' mutants are named V<top>_mutant_<name>: the shared one's names differ.)
 tmu_mutant(material early VARIANT shared FILE perlin/tmu_fractal_shared.sv
   FROM "last_issue = issue && oct_q == 2'd3;" TO "last_issue = issue && oct_q == 2'd2;"
-  WHY "the shared fractal unit takes the next sample with octave 2: the material's sums are wrong")
+  WHY "the shared fractal unit takes the next sample with octave 2: wrong sums, then the unit and the material's FIFO beside it fall out of step (a deadlock)")
 
 # Fire's e^-v table of the material unit (002 §4.2.2), a combinational top: no hls level (the
 # golden table is one function call), no x-leak mutant (no flops).
