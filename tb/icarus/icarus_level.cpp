@@ -20,7 +20,7 @@ DescribedBlock::EngineFactory icarus_level(const std::string& top, const std::st
   }
   return [top, list](const DescribedBlock& b) {
     IcarusModel model(b.name() + "_tb", top, list);
-    model.text = icarus_testbench(b.port_table(), top, model.testbench);
+    model.text = icarus_testbench(b.port_table(), top, model.testbench, list);
     const std::shared_ptr<const DescribedBlock> shared = b.share();
     return make_icarus_engine("icarus", std::move(model), b.inputs(), b.outputs(),
                               [shared](const Txn& t) { return shared->produces_output(t); });

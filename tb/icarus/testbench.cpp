@@ -26,8 +26,19 @@ std::string port_lines(const BlockPorts& p, bool as_ports) {
   return out;
 }
 
-std::string instance(const BlockPorts& p, const std::string& top) {
-  std::string out = fmt::format("  {} dut (\n", top);
+using Params = std::vector<std::pair<std::string, std::string>>;
+
+// "#(.A(A), .B(B)) " for the top's instance, "" without parameters.
+std::string parameter_map(const Params& params) {
+  std::string out;
+  for (const auto& [name, value] : params) {
+    out += fmt::format("{}.{}({})", out.empty() ? "" : ", ", name, name);
+  }
+  return out.empty() ? "" : "#(" + out + ") ";
+}
+
+std::string instance(const BlockPorts& p, const std::string& top, const Params& params = {}) {
+  std::string out = fmt::format("  {} {}dut (\n", top, parameter_map(params));
   const std::vector<BlockPorts::Port> ports = p.ports();
   for (size_t i = 0; i < ports.size(); ++i) {
     out += fmt::format("    .{}({}){}\n", ports[i].name, ports[i].name,
@@ -50,8 +61,8 @@ const Field& input_field(const Schema& in, const PortChannel& ch, int slot) {
 
 }  // namespace
 
-std::string icarus_testbench(const BlockPorts& p, const std::string& top,
-                             const std::string& module) {
+std::string icarus_testbench(const BlockPorts& p, const std::string& top, const std::string& module,
+                             const Params& params) {
   if (p.cfg_op() >= 0 || !p.request_channels().empty() || !p.response_channels().empty()) {
     throw std::invalid_argument(p.block() +
                                 ": no Icarus testbench for a block with a configuration or a "
@@ -64,11 +75,12 @@ std::string icarus_testbench(const BlockPorts& p, const std::string& top,
       "module {2};\n"
       "  logic clk_i, rst_ni, in_valid, in_ready, out_valid, out_ready;\n",
       p.block(), top, module);
+  for (const auto& [name, value] : params) tb += fmt::format("  parameter {} = {};\n", name, value);
   for (const Field& f : in.fields()) {
     tb += fmt::format("  logic {}{};\n", range(f.format.width()), item_var(f));
   }
   tb += port_lines(p, false);
-  tb += instance(p, top);
+  tb += instance(p, top, params);
   const std::string op = p.has_op() ? "item_op" : "";
   // Each stimulus channel sees the presented item when it is of its op, else zeros.
   std::string ready = "1'b0";

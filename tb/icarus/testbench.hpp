@@ -10,15 +10,20 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "harness/ports.hpp"
 
 namespace tmu::tb {
 
 // Throws std::invalid_argument for a block with a configuration or memory channels (the
-// generic testbench drives stream channels only).
+// generic testbench drives stream channels only). `params` (NAME, VALUE) become parameters of
+// the testbench, passed on to the top: the engine sets them with iverilog -P, which reaches
+// the root module only.
 std::string icarus_testbench(const BlockPorts& ports, const std::string& top,
-                             const std::string& module);
+                             const std::string& module,
+                             const std::vector<std::pair<std::string, std::string>>& params = {});
 std::string port_check(const BlockPorts& ports, const std::string& top);
 
 }  // namespace tmu::tb
