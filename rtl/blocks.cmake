@@ -402,4 +402,31 @@ tmu_mutant(deflect unreset FILE deflect/tmu_deflect.sv EXPECT x-leak
   TO "      fetching_q  <= 1'b0;\n"
   WHY "S1's valid and miss flag and the MBR's valid keep their initial values through reset (three bits, so two random starts rarely agree: a random request is looked up, the random MBR hit. The fetch flag keeps its reset: else a start with it set deadlocks both runs alike)")
 
+# Material unit (002 §4.2): the fractal sums pipelined, or shared (`--fractal shared`).
+tmu_block(material)
+tmu_block(material VARIANT shared OPTIONS "--fractal shared" ARGS -GSharedFractal=1)
+tmu_mutant(material brick FILE perlin/tmu_material.sv
+  FROM "assign even_row  = !row_bit;" TO "assign even_row  = row_bit;"
+  WHY "the half-brick shift on the odd rows instead of the even ones")
+# (fire_clamp, not fire: the test Mutant.IsCaught/material_fire would read as block material_fire.)
+tmu_mutant(material fire_clamp FILE perlin/tmu_material.sv
+  FROM "fire_sum < 0 ? '0 : (fire_sum > $signed(FireW'(2**IW - 1)) ? '1 : fire_sum[IW-1:0])"
+  TO "fire_sum[IW-1:0]"
+  WHY "fire's index wraps mod 2^15 instead of saturating at 0 and 2^15 - 1")
+tmu_mutant(material unreset FILE perlin/tmu_material.sv EXPECT x-leak
+  FROM "      s1_valid_q  <= 1'b0;\n      s2_valid_q  <= 1'b0;\n      c1_valid_q  <= 1'b0;\n      c2_valid_q  <= 1'b0;\n      out_valid_q <= 1'b0;\n"
+  TO ""
+  WHY "the five stage valids keep their initial values through reset (random samples leave)")
+# (Both variants' mutants are named V<top>_mutant_<name>: the shared one's names differ.)
+tmu_mutant(material early VARIANT shared FILE perlin/tmu_fractal_shared.sv
+  FROM "last_issue = issue && oct_q == 2'd3;" TO "last_issue = issue && oct_q == 2'd2;"
+  WHY "the shared fractal unit takes the next sample with octave 2: wrong sums, then the unit and the material's FIFO beside it fall out of step (a deadlock)")
+
+# Fire's e^-v table of the material unit (002 §4.2.2), a combinational top: no hls level (the
+# golden table is one function call), no x-leak mutant (no flops).
+tmu_block(material_fire)
+tmu_mutant(material_fire series FILE perlin/tmu_material_fire.sv
+  FROM "localparam int unsigned Terms   = 12;" TO "localparam int unsigned Terms   = 3;"
+  WHY "e^(-1/32) from three terms of its series: 20 of the 512 entries one off (the first k = 3)")
+
 tmu_write_block_tables()

@@ -225,6 +225,41 @@ package tmu_pkg;
   localparam int unsigned EnvPatternFrac = 0;
   typedef logic [EnvPatternW-1:0] env_pattern_t;
 
+  // MaterialWriteOp: UQ1.0, material unit write: 0 a register, 1 a colour table entry
+  localparam int unsigned MaterialWriteOpW = 1;
+  localparam int unsigned MaterialWriteOpFrac = 0;
+  typedef logic [MaterialWriteOpW-1:0] material_write_op_t;
+
+  // MaterialRegId: UQ4.0, material unit register: 0 kind, 1 g_t, 2 g_v, 3 g_r, 4 g_w, 5 offset, 6 g_l, 7 cutoff, 8 pw, 9 ph, 10 mortar_w, 11 mortar_h; 12..15 ignored
+  localparam int unsigned MaterialRegIdW = 4;
+  localparam int unsigned MaterialRegIdFrac = 0;
+  typedef logic [MaterialRegIdW-1:0] material_reg_id_t;
+
+  // MaterialRegValue: UQ16.0, material unit register value, raw (g_w, offset, cutoff two's complement)
+  localparam int unsigned MaterialRegValueW = 16;
+  localparam int unsigned MaterialRegValueFrac = 0;
+  typedef logic [MaterialRegValueW-1:0] material_reg_value_t;
+
+  // MaterialTable: UQ1.0, material unit colour table: 0 main, 1 mortar
+  localparam int unsigned MaterialTableW = 1;
+  localparam int unsigned MaterialTableFrac = 0;
+  typedef logic [MaterialTableW-1:0] material_table_t;
+
+  // MaterialEntry: UQ8.0, material unit colour table entry 0..127 (a write to 128..255 is ignored)
+  localparam int unsigned MaterialEntryW = 8;
+  localparam int unsigned MaterialEntryFrac = 0;
+  typedef logic [MaterialEntryW-1:0] material_entry_t;
+
+  // FireIndex: UQ9.0, fire's e^-v table index k = clamp(floor(32 v), 0, 511)
+  localparam int unsigned FireIndexW = 9;
+  localparam int unsigned FireIndexFrac = 0;
+  typedef logic [FireIndexW-1:0] fire_index_t;
+
+  // FireEntry: UQ1.12, fire's e^-v table entry round(e^(-k/32) 2^12)
+  localparam int unsigned FireEntryW = 13;
+  localparam int unsigned FireEntryFrac = 12;
+  typedef logic [FireEntryW-1:0] fire_entry_t;
+
   // largest texture side in texels
   localparam int unsigned MaxTexSize = 4096;
 

@@ -15,7 +15,9 @@
 #include <cstdint>
 #include <systemc>
 
+#include "blocks/material/material_ports.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/sc_ports.hpp"
 #include "hls/common/small_fifo.hpp"
 #include "perlin/material_unit.hpp"
 #include "perlin/noise.hpp"
@@ -24,32 +26,7 @@ namespace tmu::hls {
 
 class MaterialSc : public sc_core::sc_module {
  public:
-  static constexpr int kCoordW = tmu::formats::kSolidCoord.width();
-  static constexpr int kRgbW = tmu::formats::kRgb888.width();
-  using coord_t = sc_dt::sc_int<kCoordW>;
-  using rgb_t = sc_dt::sc_uint<kRgbW>;
-
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  sc_core::sc_in<bool> wr_valid_i{"wr_valid_i"};
-  sc_core::sc_out<bool> wr_ready_o{"wr_ready_o"};
-  sc_core::sc_in<bool> wr_op_i{"wr_op_i"};  // 0 register, 1 table entry
-  sc_core::sc_in<sc_dt::sc_uint<4>> wr_reg_i{"wr_reg_i"};
-  sc_core::sc_in<sc_dt::sc_uint<16>> wr_value_i{"wr_value_i"};
-  sc_core::sc_in<bool> wr_table_i{"wr_table_i"};
-  sc_core::sc_in<sc_dt::sc_uint<8>> wr_index_i{"wr_index_i"};
-  sc_core::sc_in<rgb_t> wr_rgb_i{"wr_rgb_i"};
-
-  sc_core::sc_in<bool> in_valid_i{"in_valid_i"};
-  sc_core::sc_out<bool> in_ready_o{"in_ready_o"};
-  sc_core::sc_in<coord_t> in_u_i{"in_u_i"};
-  sc_core::sc_in<coord_t> in_v_i{"in_v_i"};
-  sc_core::sc_in<coord_t> in_w_i{"in_w_i"};
-
-  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
-  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
-  sc_core::sc_out<rgb_t> out_rgb_o{"out_rgb_o"};
+  TMU_SC_PORTS(material)
 
   // Clocks per sample of the shared configuration: one per octave.
   static constexpr int kSharedClocks = perlin::kOctaves;
@@ -84,15 +61,17 @@ class MaterialSc : public sc_core::sc_module {
       // Everything below sees the values from before this edge.
       if (out_valid_o.read() && out_ready_i.read()) out.pop();
       if (in_ready_o.read() && in_valid_i.read()) {
-        out.push(unit.sample(in_u_i.read().to_int64(), in_v_i.read().to_int64(),
-                             in_w_i.read().to_int64()));
+        const fx::Format c = formats::kSolidCoord;
+        out.push(unit.sample(signed_value(in_u_i.read(), c), signed_value(in_v_i.read(), c),
+                             signed_value(in_w_i.read(), c)));
         if (shared_) busy = kSharedClocks - 1;
       } else if (busy > 0) {
         --busy;
       }
       if (wr_ready_o.read() && wr_valid_i.read()) {
-        if (wr_op_i.read()) {
-          unit.write_table(wr_table_i.read() ? 1u : 0u, static_cast<uint32_t>(wr_index_i.read()),
+        if (wr_op_i.read() != 0) {  // a colour table entry
+          unit.write_table(static_cast<uint32_t>(wr_table_i.read()),
+                           static_cast<uint32_t>(wr_index_i.read()),
                            static_cast<uint32_t>(wr_rgb_i.read()));
         } else {
           unit.write_reg(static_cast<perlin::MaterialReg>(static_cast<uint32_t>(wr_reg_i.read())),

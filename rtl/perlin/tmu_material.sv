@@ -222,7 +222,7 @@ module tmu_material #(
   logic [8:0]  fire_k;
   logic [12:0] fire_e;  // e^-v, UQ1.12
   assign fire_k = in_v_i[CW-1] ? 9'd0 : (|in_v_i[CW-2:16] ? 9'd511 : in_v_i[15:7]);
-  tmu_material_fire u_fire (.k_i(fire_k), .entry_o(fire_e));
+  tmu_material_fire u_fire (.in_k_i(fire_k), .out_entry_o(fire_e));
 
   tmu_pkg::solid_coord_t shaped_u, shaped_v;
   assign shaped_u = kind_q == Cloud ? {in_u_i[CW-2:0], 1'b0} : in_u_i;

@@ -11,15 +11,15 @@
 ///   entry k = round(a_k 2^12) half up: (a_k 2^12 + 2^(P-1)) >> P.
 /// The exact values e^(-k/32) 2^12 lie at least 0.00107 from a rounding tie (a fraction
 /// .5) for every k, and the error above is below 2^-26 there, so every entry is golden's:
-/// tests/material_cosim_test.cpp reads all 512 from this module's Verilated model and
-/// compares them with fire_entry().
+/// the block material_fire (tb/blocks/material_fire/) reads all 512 from this module's
+/// Verilated model and compares them with fire_entry().
 ///
 /// Example: k = 32 (v = 1.0): e^-1 2^12 = 1506.8, entry 1507.
 module tmu_material_fire (
   /// k = floor(v 32) clamped to 0..511 (the caller clamps).
-  input  logic [8:0]  k_i,
+  input  logic [8:0]  in_k_i,
   /// e^(-k/32), UQ1.12.
-  output logic [12:0] entry_o
+  output logic [12:0] out_entry_o
 );
 
   localparam int unsigned Entries = 512;
@@ -51,6 +51,6 @@ module tmu_material_fire (
 
   localparam logic [Entries*EW-1:0] Table = build_table();
 
-  assign entry_o = Table[32'(k_i)*EW +: EW];
+  assign out_entry_o = Table[32'(in_k_i)*EW +: EW];
 
 endmodule

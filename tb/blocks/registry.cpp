@@ -3,8 +3,6 @@
 #include <block_list.hpp>
 #include <stdexcept>
 
-#include "blocks/material_block.hpp"
-
 namespace tmu::tb {
 
 #define TMU_DECLARE_BLOCK(block)  \
@@ -39,12 +37,6 @@ std::vector<BlockVariant> block_variants() {
 std::vector<BlockInfo> block_list() {
   std::vector<BlockInfo> out;
   for (const Entry& e : kEntries) out.push_back(e.info());
-  std::vector<BlockInfo> old = {
-      {"material",
-       "Material unit (002 §4.2): registers and colour tables behind a write port; (u, v, "
-       "w) -> shape -> fractal sums -> marble, wood, brick, fog, cloud, fire RGB888",
-       {}}};
-  for (BlockInfo& b : old) out.push_back(std::move(b));
   return out;
 }
 
@@ -64,7 +56,6 @@ std::unique_ptr<Block> make_block(const std::string& name_or_alias, const BlockO
   for (const Entry& e : kEntries) {
     if (e.info().name == name) return e.make(options);
   }
-  if (name == "material") return std::make_unique<MaterialBlock>(options);
   std::string known;
   for (const BlockInfo& b : block_list()) known += (known.empty() ? "" : ", ") + b.name;
   throw std::invalid_argument("unknown block '" + name_or_alias + "' (blocks: " + known + ")");

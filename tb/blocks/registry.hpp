@@ -16,7 +16,7 @@ namespace tmu::tb {
 
 struct BlockOptions {
   uint64_t seed = 1;
-  std::string texture;            // ccc-bilinear: a .ccc file instead of a random texture
+  std::string texture;            // ccc_cache_bilinear: a .ccc file instead of a random texture
   std::optional<bool> lookahead;  // ccc_cache_bilinear: neighbour prefetch (unset: drawn)
   // mipgen: parts of every frame format; -1 draws them from the seed.
   int mip_log2_w = -1;      // log2 of the width, 0..10
@@ -54,7 +54,7 @@ struct BlockOptions {
   // coord_gen: the tables' grid (A 6..9) and entry width (W 8..10); the rtl level is verilated
   // at the variants of rtl/blocks.cmake.
   deflect::TableConfig coord_tables;
-  // turbulence, material: the fractal sums on one noise unit shared by the four octaves (one
+  // fractal, material: the fractal sums on one noise unit shared by the four octaves (one
   // sample per 4 clocks, the thesis's design) instead of four pipelined units (one per clock).
   bool fractal_shared = false;
 };

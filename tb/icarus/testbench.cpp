@@ -70,6 +70,7 @@ std::string icarus_testbench(const BlockPorts& p, const std::string& top, const 
       "module {2};\n"
       "  logic clk_i, rst_ni, in_valid, in_ready, out_valid, out_ready;\n",
       p.block(), top, module);
+  for (const auto& [name, value] : params) tb += fmt::format("  parameter {} = {};\n", name, value);
   for (const Field& f : in.fields()) {
     tb += fmt::format("  logic {}{};\n", range(f.format.width()), item_var(f));
   }

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <memory>
 
-#include "blocks/material_block.hpp"
+#include "blocks/material/material_block.hpp"
 #include "blocks/specular_combine/specular_combine_block.hpp"
 #include "perlin/materials_ideal.hpp"
 #include "render/material_config.hpp"
@@ -33,7 +33,7 @@ std::vector<uint32_t> run_procedural(const ChainInput& in, std::vector<UnitRun>&
   }
   std::vector<uint32_t> rgba;
   for (const tb::Txn& t : run_and_keep(std::move(unit), in.level, in.frags, units, outputs_of))
-    rgba.push_back((static_cast<uint32_t>(t.f[0]) << 8) | 0xFF);
+    rgba.push_back((static_cast<uint32_t>(t.f[tb::desc::material::out_rgb]) << 8) | 0xFF);
   if (mat.sampler.combine != texram::Combine::kShade) return rgba;
 
   UnitRun shade;

@@ -27,8 +27,8 @@ void add_cosim_command(CLI::App& app, ExitCode& exit_code) {
     CosimRequest r = finish(*args);
     const auto block = tb::make_block(r.block, r.block_options);
     // Without --engines, the default levels the block has: a block without a SystemC model
-    // (bank_address, footprint_setup) compares rtl alone, widths without a verilated variant
-    // hls alone; a note names what is left out.
+    // (bank_address, footprint_setup, material_fire) compares rtl alone, widths without a verilated
+    // variant hls alone; a note names what is left out.
     const auto* described = dynamic_cast<const tb::DescribedBlock*>(block.get());
     if (cmd->count("--engines") == 0 && described != nullptr) {
       const std::vector<std::string> have = described->levels();

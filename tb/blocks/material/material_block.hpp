@@ -1,16 +1,19 @@
-// The material unit as a co-simulation block (`texsim cosim material`; 002 §4.2;
-// golden/perlin/material_unit.hpp, whose MaterialUnit is the golden engine): a register file
+// The material unit as a co-simulation block, `texsim cosim material` (002 §4.2;
+// golden/perlin/material_unit.hpp, whose MaterialUnit is the golden model): a register file
 // and two colour tables behind a write port, and per sample the stages shape -> fractal ->
 // colour (rtl/perlin/tmu_material.sv, hls/perlin/material_sc.hpp).
 //
-// Input items, applied in order (a sample sees every write before it):
-//   op 0  register write: reg (MaterialReg id, 12..15 ignored), value (16 bits; a value out of
-//         the register's range is stored as its nearest limit, MaterialUnit::write_reg)
-//   op 1  table write: table (0 main, 1 mortar), index (beyond 127 ignored), rgb (RGB888)
-//   op 2  sample: u, v, w (SolidCoord SQ12.12 raw); op 3 is a sample too
-// Output: rgb (RGB888), one per sample. Two RTL configurations with the same ports, chosen by
-// BlockOptions::fractal_shared (`--fractal pipelined|shared`): the fractal unit pipelined (one
-// sample per clock) or shared (one per 4 clocks); the hls model follows it.
+// Channels (material_ports.hpp), items applied in order (a sample sees every write before it):
+//   in   a sample: u, v, w (SolidCoord SQ12.12) -> rgb (RGB888)
+//   wr   a write: wr_op 0 a register (reg: MaterialReg id, 12..15 ignored; value: 16 bits, a
+//        value out of the register's range stored as its nearest limit,
+//        MaterialUnit::write_reg), wr_op 1 a table entry (table: 0 main, 1 mortar; index:
+//        beyond 127 ignored; rgb)
+// The register writes are the block's configuration, but a host writes them between samples
+// through the same handshake, so they stay a Write channel. Two RTL configurations with the
+// same ports, chosen by BlockOptions::fractal_shared (`--fractal pipelined|shared`): the
+// fractal unit pipelined (one sample per clock) or shared (one per 4 clocks); the hls model
+// follows it.
 //
 // Stimulus: the setup loads a register set and both tables drawn from the seed. Directed:
 // every material on the same coordinates (the kind switched by register writes mid-stream,
@@ -27,7 +30,6 @@
 // tables every 16384.
 #pragma once
 
-#include <array>
 #include <bitset>
 #include <cstdint>
 #include <memory>
@@ -35,27 +37,16 @@
 #include <string>
 #include <vector>
 
+#include "blocks/material/material_ports.hpp"
 #include "blocks/registry.hpp"
-#include "harness/block.hpp"
-#include "harness/rtl_runner.hpp"
+#include "harness/describe.hpp"
+#include "harness/described_block.hpp"
 #include "perlin/material_unit.hpp"
 #include "perlin/materials.hpp"
 
-namespace tmu::tb {
+TMU_DESCRIBE(material)
 
-enum MaterialField {
-  kMatOp,
-  kMatReg,
-  kMatValue,
-  kMatTable,
-  kMatIndex,
-  kMatRgb,
-  kMatU,
-  kMatV,
-  kMatW
-};
-enum MaterialOutField { kMatOutRgb };
-enum MaterialOp : uint64_t { kMatOpReg = 0, kMatOpTable = 1, kMatOpSample = 2 };
+namespace tmu::tb {
 
 // Item constructors, for tests and the renderer. The value's low 16 bits (as write_reg), the
 // table's bit 0, an index above 255 kept above 127 (ignored, as write_table), the low 24 bits
@@ -68,31 +59,23 @@ Txn material_sample_item(int32_t u, int32_t v, int32_t w);
 // are stored saturated.
 std::vector<Txn> material_load_items(const perlin::MaterialRegs& regs,
                                      const perlin::ColourTables& tables);
-bool is_material_sample(const Txn& item);
-// A sample's coordinates, sign-extended.
-std::array<int32_t, 3> material_coords(const Txn& item);
 
 // A register set and tables drawn from `rng` (every register in its range).
 perlin::MaterialRegs random_material_regs(std::mt19937_64& rng);
 perlin::ColourTables random_colour_tables(std::mt19937_64& rng);
 
-class MaterialBlock : public Block {
+class MaterialBlock : public DescribedBlockOf<MaterialBlock> {
  public:
   explicit MaterialBlock(const BlockOptions& options = {});
 
-  std::string name() const override { return "material"; }
-  const Schema& inputs() const override;
-  const Schema& outputs() const override;
-  bool produces_output(const Txn& item) const override { return is_material_sample(item); }
   std::vector<Txn> setup_items() const override;
   std::vector<Txn> directed_items() const override;
   std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Engine> engine(const std::string& level) const override;
+  std::unique_ptr<Model> golden() const override;
   std::vector<std::string> coverage_cases() const override;
   void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
              Coverage& coverage) const override;
-  std::vector<Port> ports() const override;
-  std::string repro_options() const override;
+  std::string variant() const override;
 
   bool shared() const { return shared_; }
 
@@ -116,10 +99,4 @@ class MaterialBlock : public Block {
   mutable CoverState cover_state_;
 };
 
-// The rtl engine for any Verilated model with the unit's ports (tests use mutants).
-template <class Model>
-std::unique_ptr<Engine> make_material_rtl_engine(const std::string& name);
-
 }  // namespace tmu::tb
-
-#include "blocks/material_rtl.inl"

@@ -1,76 +1,60 @@
-#include "blocks/material_block.hpp"
-
-#include <Vtmu_material.h>
-#include <Vtmu_material_shared.h>
+#include "blocks/material/material_block.hpp"
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <functional>
 #include <stdexcept>
 
 #include "blocks/noise/solid_stimulus.hpp"
-#include "formats/formats.hpp"
-#include "harness/hls_runner.hpp"
+#include "harness/described_engines.hpp"
+#include "harness/described_hls.hpp"
 #include "hls/perlin/material_sc.hpp"
 #include "perlin/noise.hpp"
+#include "rtl_models_material.hpp"
+
+TMU_DESCRIBE_SC(material)
+TMU_REGISTER_BLOCK(material, MaterialBlock,
+                   "Material unit (002 §4.2): registers and colour tables behind a write port; "
+                   "(u, v, w) -> shape -> fractal sums -> marble, wood, brick, fog, cloud, fire "
+                   "RGB888")
 
 namespace tmu::tb {
-namespace fmts = tmu::formats;
 using perlin::ColourTables;
 using perlin::MaterialKind;
 using perlin::MaterialReg;
 using perlin::MaterialRegs;
 using perlin::NoiseConfig;
+using D = desc::material;
 
 namespace {
 
-const Schema kInputs({{"op", fx::UQ(2, 0)},
-                      {"reg", fx::UQ(4, 0)},
-                      {"value", fx::UQ(16, 0)},
-                      {"table", fx::UQ(1, 0)},
-                      {"index", fx::UQ(8, 0)},
-                      {"rgb", fmts::kRgb888},
-                      {"u", fmts::kSolidCoord},
-                      {"v", fmts::kSolidCoord},
-                      {"w", fmts::kSolidCoord}});
-const Schema kOutputs({{"rgb", fmts::kRgb888}});
-
-constexpr int kCoordW = fmts::kSolidCoord.width();     // 24
-constexpr int32_t kOne = 1 << perlin::kCoordFracBits;  // 1.0, raw SQ12.12
-constexpr int32_t kCoordMin = -(1 << (kCoordW - 1));
-constexpr int32_t kCoordMax = (1 << (kCoordW - 1)) - 1;
-constexpr uint32_t kCoordMask = (1u << kCoordW) - 1;
+constexpr int32_t kOne = solid::kUnit;  // 1.0, raw SQ12.12
+using solid::kCoordMax;
+using solid::kCoordMin;
 constexpr int64_t kIndexLimit = int64_t{1} << perlin::kIndexBits;                // 2^15
 constexpr int kFireShift = perlin::kCoordFracBits - perlin::kFireTableFracBits;  // v >> 7
 // Random items: a new register set in the middle of every this many items, new tables too.
 constexpr size_t kRegsPeriod = 2048;
 constexpr size_t kTablesPeriod = 16384;
 
-int32_t sign_extend(uint64_t raw, int bits) {
-  const auto low = static_cast<uint32_t>(raw & ((uint64_t{1} << bits) - 1));
-  return static_cast<int32_t>(low << (32 - bits)) >> (32 - bits);
-}
 uint32_t u16(int64_t x) { return static_cast<uint32_t>(x) & 0xFFFFu; }
 
 void append(std::vector<Txn>& to, const std::vector<Txn>& from) {
   to.insert(to.end(), from.begin(), from.end());
 }
 
-size_t count_samples(const std::vector<Txn>& items) {
-  size_t n = 0;
-  for (const Txn& t : items) n += is_material_sample(t);
-  return n;
-}
+bool is_sample(const Txn& t) { return t.f[0] == D::op_in; }
+bool is_table_write(const Txn& t) { return t.f[0] == D::op_wr && t.f[D::wr_op] != 0; }
 
 // Applies a write item to the golden unit.
 void apply_write(perlin::MaterialUnit& unit, const Txn& t) {
-  if (t.f[kMatOp] == kMatOpReg) {
-    unit.write_reg(static_cast<MaterialReg>(t.f[kMatReg] & 0xF),
-                   static_cast<uint32_t>(t.f[kMatValue]));
+  if (t.f[D::wr_op] == 0) {
+    unit.write_reg(static_cast<MaterialReg>(t.f[D::wr_reg]),
+                   static_cast<uint32_t>(t.f[D::wr_value]));
   } else {
-    unit.write_table(static_cast<uint32_t>(t.f[kMatTable]), static_cast<uint32_t>(t.f[kMatIndex]),
-                     static_cast<uint32_t>(t.f[kMatRgb]));
+    unit.write_table(static_cast<uint32_t>(t.f[D::wr_table]),
+                     static_cast<uint32_t>(t.f[D::wr_index]),
+                     static_cast<uint32_t>(t.f[D::wr_rgb]));
   }
 }
 
@@ -101,113 +85,23 @@ std::vector<Txn> table_items(const ColourTables& tables) {
   return items;
 }
 
-// --- engines -----------------------------------------------------------------------------
-
-class GoldenEngine : public Engine {
+// The golden unit over a run: writes change its registers and tables, a sample is shaded on
+// what was written before it.
+class GoldenMaterial : public Model {
  public:
-  std::string name() const override { return "golden"; }
-  RunResult run(const std::vector<Txn>& items, const RunOptions&) override {
-    RunResult r;
-    r.outputs.reserve(count_samples(items));
-    const auto start = std::chrono::steady_clock::now();
-    perlin::MaterialUnit unit;
-    for (const Txn& t : items) {
-      if (!is_material_sample(t)) {
-        apply_write(unit, t);
-        continue;
-      }
-      const auto [u, v, w] = material_coords(t);
-      Txn out;
-      out.f[kMatOutRgb] = unit.sample(u, v, w);
-      r.outputs.push_back(out);
+  void step(const Txn& item, Sink& sink) override {
+    if (!is_sample(item)) {
+      apply_write(unit_, item);
+      return;
     }
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.output_cycles.assign(r.outputs.size(), 0);
-    return r;
-  }
-};
-
-// The hls module with its signals, driven by the harness's ScDriver.
-class HlsBench : public sc_core::sc_module, public ScAdapter {
- public:
-  HlsBench(sc_core::sc_module_name name, sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n,
-           bool shared)
-      : sc_module(name), dut_("dut", shared) {
-    dut_.clk_i(clk);
-    dut_.rst_ni(rst_n);
-    dut_.wr_valid_i(wr_valid_);
-    dut_.wr_ready_o(wr_ready_);
-    dut_.wr_op_i(wr_op_);
-    dut_.wr_reg_i(wr_reg_);
-    dut_.wr_value_i(wr_value_);
-    dut_.wr_table_i(wr_table_);
-    dut_.wr_index_i(wr_index_);
-    dut_.wr_rgb_i(wr_rgb_);
-    dut_.in_valid_i(in_valid_);
-    dut_.in_ready_o(in_ready_);
-    dut_.in_u_i(in_u_);
-    dut_.in_v_i(in_v_);
-    dut_.in_w_i(in_w_);
-    dut_.out_valid_o(out_valid_);
-    dut_.out_ready_i(out_ready_);
-    dut_.out_rgb_o(out_rgb_);
-  }
-  void drive(const Txn* item) override {
-    const bool sample = item && is_material_sample(*item);
-    const bool write = item && !sample;
-    wr_valid_.write(write);
-    wr_op_.write(write && (item->f[kMatOp] & 1) != 0);
-    wr_reg_.write(write ? item->f[kMatReg] & 0xF : 0);
-    wr_value_.write(write ? item->f[kMatValue] & 0xFFFF : 0);
-    wr_table_.write(write && (item->f[kMatTable] & 1) != 0);
-    wr_index_.write(write ? item->f[kMatIndex] & 0xFF : 0);
-    wr_rgb_.write(write ? item->f[kMatRgb] & 0xFFFFFF : 0);
-    in_valid_.write(sample);
-    const std::array<int32_t, 3> c = sample ? material_coords(*item) : std::array<int32_t, 3>{};
-    in_u_.write(c[0]);
-    in_v_.write(c[1]);
-    in_w_.write(c[2]);
-  }
-  bool accepts(const Txn& item) const override {
-    return is_material_sample(item) ? in_ready_.read() : wr_ready_.read();
-  }
-  void set_out_ready(bool ready) override { out_ready_.write(ready); }
-  bool out_valid() const override { return out_valid_.read(); }
-  Txn out() const override {
-    Txn t;
-    t.f[kMatOutRgb] = out_rgb_.read();
-    return t;
+    const auto [u, v, w] = solid::coords(item, D::in_u);
+    Txn out;
+    out.f[D::out_rgb] = unit_.sample(u, v, w);
+    sink.output(out);
   }
 
  private:
-  hls::MaterialSc dut_;
-  sc_core::sc_signal<bool> wr_valid_{"wr_valid"}, wr_ready_{"wr_ready"}, wr_op_{"wr_op"};
-  sc_core::sc_signal<sc_dt::sc_uint<4>> wr_reg_{"wr_reg"};
-  sc_core::sc_signal<sc_dt::sc_uint<16>> wr_value_{"wr_value"};
-  sc_core::sc_signal<bool> wr_table_{"wr_table"};
-  sc_core::sc_signal<sc_dt::sc_uint<8>> wr_index_{"wr_index"};
-  sc_core::sc_signal<hls::MaterialSc::rgb_t> wr_rgb_{"wr_rgb"};
-  sc_core::sc_signal<bool> in_valid_{"in_valid"}, in_ready_{"in_ready"};
-  sc_core::sc_signal<hls::MaterialSc::coord_t> in_u_{"in_u"}, in_v_{"in_v"}, in_w_{"in_w"};
-  sc_core::sc_signal<bool> out_valid_{"out_valid"}, out_ready_{"out_ready"};
-  sc_core::sc_signal<hls::MaterialSc::rgb_t> out_rgb_{"out_rgb"};
-};
-
-class HlsEngine : public Engine {
- public:
-  explicit HlsEngine(bool shared) : shared_(shared) {}
-  std::string name() const override { return "hls"; }
-  RunResult run(const std::vector<Txn>& items, const RunOptions& options) override {
-    const bool shared = shared_;
-    return run_hls<HlsBench>(
-        [shared](sc_core::sc_clock& clk, sc_core::sc_signal<bool>& rst_n) {
-          return std::make_unique<HlsBench>("bench", clk, rst_n, shared);
-        },
-        items, count_samples(items), options);
-  }
-
- private:
-  bool shared_;
+  perlin::MaterialUnit unit_;
 };
 
 // --- what the golden model computes, for the directed search and coverage ------------------
@@ -316,42 +210,24 @@ std::array<int32_t, 3> find_coord(const std::function<bool(const std::array<int3
 }  // namespace
 
 Txn material_reg_item(MaterialReg reg, uint32_t value) {
-  Txn t;
-  t.f[kMatOp] = kMatOpReg;
-  t.f[kMatReg] = static_cast<uint32_t>(reg) & 0xFu;
-  t.f[kMatValue] = value & 0xFFFFu;
-  return t;
+  return channel_item(D::table(), "wr", {0, static_cast<uint32_t>(reg), value});
 }
 
 Txn material_table_item(uint32_t table, uint32_t index, uint32_t rgb) {
-  Txn t;
-  t.f[kMatOp] = kMatOpTable;
-  t.f[kMatTable] = table & 1u;
-  t.f[kMatIndex] = std::min<uint32_t>(index, 0xFF);  // beyond 255 stays beyond 127: ignored
-  t.f[kMatRgb] = rgb & 0xFFFFFFu;
-  return t;
+  // An index beyond 255 stays beyond 127 (ignored) rather than wrapping into the table.
+  return channel_item(D::table(), "wr", {1, 0, 0, table, std::min<uint32_t>(index, 0xFF), rgb});
 }
 
 Txn material_sample_item(int32_t u, int32_t v, int32_t w) {
-  Txn t;
-  t.f[kMatOp] = kMatOpSample;
-  t.f[kMatU] = static_cast<uint32_t>(u) & kCoordMask;
-  t.f[kMatV] = static_cast<uint32_t>(v) & kCoordMask;
-  t.f[kMatW] = static_cast<uint32_t>(w) & kCoordMask;
-  return t;
+  return channel_item(
+      D::table(), "in",
+      {static_cast<uint32_t>(u), static_cast<uint32_t>(v), static_cast<uint32_t>(w)});
 }
 
 std::vector<Txn> material_load_items(const MaterialRegs& regs, const ColourTables& tables) {
   std::vector<Txn> items = reg_items(regs);
   append(items, table_items(tables));
   return items;
-}
-
-bool is_material_sample(const Txn& item) { return (item.f[kMatOp] & kMatOpSample) != 0; }
-
-std::array<int32_t, 3> material_coords(const Txn& item) {
-  return {sign_extend(item.f[kMatU], kCoordW), sign_extend(item.f[kMatV], kCoordW),
-          sign_extend(item.f[kMatW], kCoordW)};
 }
 
 MaterialRegs random_material_regs(std::mt19937_64& rng) {
@@ -380,10 +256,14 @@ ColourTables random_colour_tables(std::mt19937_64& rng) {
 }
 
 MaterialBlock::MaterialBlock(const BlockOptions& options)
-    : seed_(options.seed), shared_(options.fractal_shared) {}
+    : DescribedBlockOf(D::table()), seed_(options.seed), shared_(options.fractal_shared) {
+  add_level("hls", hls_level<desc::material_sc, hls::MaterialSc>(shared_));
+  TMU_ADD_RTL_LEVELS(material, variant());
+}
 
-const Schema& MaterialBlock::inputs() const { return kInputs; }
-const Schema& MaterialBlock::outputs() const { return kOutputs; }
+std::string MaterialBlock::variant() const { return shared_ ? "shared" : ""; }
+
+std::unique_ptr<Model> MaterialBlock::golden() const { return std::make_unique<GoldenMaterial>(); }
 
 std::vector<Txn> MaterialBlock::setup_items() const {
   // Every register and every entry (the tables have no reset), from the seed.
@@ -719,16 +599,6 @@ std::vector<Txn> MaterialBlock::random_items(std::mt19937_64& rng, size_t count)
   return items;
 }
 
-std::unique_ptr<Engine> MaterialBlock::engine(const std::string& level) const {
-  if (level == "golden") return std::make_unique<GoldenEngine>();
-  if (level == "hls") return std::make_unique<HlsEngine>(shared_);
-  if (level == "rtl") {
-    if (shared_) return make_material_rtl_engine<Vtmu_material_shared>("rtl");
-    return make_material_rtl_engine<Vtmu_material>("rtl");
-  }
-  throw std::invalid_argument("material: no engine '" + level + "' (golden, hls, rtl)");
-}
-
 namespace {
 constexpr const char* kMarble = "marble";
 constexpr const char* kWood = "wood";
@@ -797,19 +667,19 @@ void MaterialBlock::cover(const std::vector<Txn>& items, size_t index, const Txn
   }
   for (; st.next < index; ++st.next) {
     const Txn& t = items[st.next];
-    if (is_material_sample(t)) {
+    if (is_sample(t)) {
       st.reg_write = st.kind_change = st.saturated = st.mortar_clamped = false;
       st.unknown_reg = st.ignored_entry = false;
       continue;
     }
-    if (t.f[kMatOp] == kMatOpTable) {
-      if (t.f[kMatIndex] >= perlin::kColourEntries) st.ignored_entry = true;
+    if (is_table_write(t)) {
+      if (t.f[D::wr_index] >= perlin::kColourEntries) st.ignored_entry = true;
       apply_write(st.unit, t);
       continue;
     }
     const MaterialRegs before = st.unit.regs();
-    const auto id = static_cast<uint32_t>(t.f[kMatReg] & 0xF);
-    const auto value = static_cast<uint32_t>(t.f[kMatValue]);
+    const auto id = static_cast<uint32_t>(t.f[D::wr_reg]);
+    const auto value = static_cast<uint32_t>(t.f[D::wr_value]);
     apply_write(st.unit, t);
     const MaterialRegs& after = st.unit.regs();
     st.reg_write = true;
@@ -840,7 +710,7 @@ void MaterialBlock::cover(const std::vector<Txn>& items, size_t index, const Txn
   }
 
   const MaterialRegs& r = st.unit.regs();
-  const auto [u, v, w] = material_coords(items[index]);
+  const auto [u, v, w] = solid::coords(items[index], D::in_u);
   const SampleTrace t = trace_sample(r, u, v, w);
   for (const int32_t x : {u, v, w}) {
     if (x == kCoordMin) ++cov[kMinCoord];
@@ -910,44 +780,20 @@ void MaterialBlock::cover(const std::vector<Txn>& items, size_t index, const Txn
     if (t.entry == 0) ++cov[kEntry0];
     if (t.entry == 127) ++cov[kEntry127];
     if (t.entry == 0 && st.last_entry == 127) ++cov[kWrap127To0];
-    if (index > 0 && items[index - 1].f[kMatOp] == kMatOpTable) {
+    if (index > 0 && is_table_write(items[index - 1])) {
       const Txn& wr = items[index - 1];
-      const bool mortar_table = (wr.f[kMatTable] & 1) != 0;
-      if (wr.f[kMatIndex] == t.entry && mortar_table == t.mortar) ++cov[kAfterEntry];
+      const bool mortar_table = wr.f[D::wr_table] != 0;
+      if (wr.f[D::wr_index] == t.entry && mortar_table == t.mortar) ++cov[kAfterEntry];
     }
-    if (index + 1 < items.size() && items[index + 1].f[kMatOp] == kMatOpTable) {
+    if (index + 1 < items.size() && is_table_write(items[index + 1])) {
       const Txn& wr = items[index + 1];
-      const bool mortar_table = (wr.f[kMatTable] & 1) != 0;
-      if (wr.f[kMatIndex] == t.entry && mortar_table == t.mortar) ++cov[kEntryRewritten];
+      const bool mortar_table = wr.f[D::wr_table] != 0;
+      if (wr.f[D::wr_index] == t.entry && mortar_table == t.mortar) ++cov[kEntryRewritten];
     }
     st.last_entry = t.entry;
   } else {
     st.last_entry = -1;
   }
 }
-
-std::vector<Port> MaterialBlock::ports() const {
-  const int cw = fmts::kSolidCoord.width(), rgb = fmts::kRgb888.width();
-  return {{"clk_i"},
-          {"rst_ni"},
-          {"wr_valid_i"},
-          {"wr_ready_o"},
-          {"wr_op_i"},
-          {"wr_reg_i", 4},
-          {"wr_value_i", 16},
-          {"wr_table_i"},
-          {"wr_index_i", 8},
-          {"wr_rgb_i", rgb},
-          {"in_valid_i"},
-          {"in_ready_o"},
-          {"in_u_i", cw, true},
-          {"in_v_i", cw, true},
-          {"in_w_i", cw, true},
-          {"out_valid_o"},
-          {"out_ready_i"},
-          {"out_rgb_o", rgb}};
-}
-
-std::string MaterialBlock::repro_options() const { return shared_ ? "--fractal shared" : ""; }
 
 }  // namespace tmu::tb
