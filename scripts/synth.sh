@@ -28,9 +28,11 @@ done
 
 printf "%-28s %10s %10s %10s %12s %6s\n" block cells flops logic memory_bits depth
 status=0
-while read -r top sources; do
-  [[ -z "$top" || "$top" == \#* ]] && continue
+manifest="$(dirname "${BASH_SOURCE[0]}")/manifest_sources.sh"  # rtl/manifest.txt resolved
+manifest_tops=$("$manifest")
+for top in $manifest_tops; do
   [[ ${#tops[@]} -gt 0 && ! " ${tops[*]} " =~ " $top " ]] && continue
+  sources=$("$manifest" "$top")
   read_cmd="read_verilog -sv $rtl/tmu_pkg.sv"
   for s in $sources; do read_cmd+=" $rtl/$s"; done
   read_cmd+=";"
@@ -64,5 +66,5 @@ while read -r top sources; do
       END { for (i = 0; i < n; i++) { v = variants[order[i]] > 1 ? " (" variants[order[i]] " variants)" : ""
               printf "  %-26s %10s%s\n", order[i], cells[order[i]], v } }' "$work/$top.hier"
   fi
-done < "$rtl/manifest.txt"
+done
 exit $status

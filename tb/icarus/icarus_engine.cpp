@@ -6,12 +6,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -86,16 +88,36 @@ fs::path cache_dir() {
   return TMU_ICARUS_CACHE_DIR;
 }
 
-// The sources of `top` from rtl/manifest.txt, relative to rtl/, tmu_pkg.sv first.
+// The sources of `top` from rtl/manifest.txt, relative to rtl/, tmu_pkg.sv first. A row's
+// items are .sv files or earlier rows' tops, which stand for their sources; each file comes
+// once, where it first appears (the manifest's header; rtl/CMakeLists.txt and
+// scripts/manifest_sources.sh resolve it the same way).
 std::vector<std::string> manifest_sources(const fs::path& rtl, const std::string& top) {
+  std::map<std::string, std::vector<std::string>> rows;  // the rows before top's, resolved
   std::istringstream manifest(read_file(rtl / "manifest.txt"));
   for (std::string line; std::getline(manifest, line);) {
     std::istringstream fields(line);
     std::string name;
-    if (!(fields >> name) || name != top) continue;
-    std::vector<std::string> sources = {"tmu_pkg.sv"};
-    for (std::string s; fields >> s;) sources.push_back(s);
-    return sources;
+    if (!(fields >> name) || name.starts_with("#")) continue;
+    std::vector<std::string> sources;
+    const auto add = [&sources](const std::string& file) {
+      if (std::find(sources.begin(), sources.end(), file) == sources.end()) sources.push_back(file);
+    };
+    for (std::string item; fields >> item;) {
+      if (item.ends_with(".sv")) {
+        add(item);
+      } else if (const auto row = rows.find(item); row != rows.end()) {
+        for (const std::string& file : row->second) add(file);
+      } else {
+        throw std::runtime_error("icarus: rtl/manifest.txt: " + name + ": " + item +
+                                 " is neither a .sv file nor the top of an earlier row");
+      }
+    }
+    if (name == top) {
+      sources.insert(sources.begin(), "tmu_pkg.sv");
+      return sources;
+    }
+    rows.emplace(name, std::move(sources));
   }
   throw std::runtime_error("icarus: " + top + " is not a block of rtl/manifest.txt");
 }
