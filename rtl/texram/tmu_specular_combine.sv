@@ -120,12 +120,21 @@ module tmu_specular_combine (
     if (load[2]) s2_colour_q <= colour;
   end
 
-  // Assertions run under Verilator (--assert); Yosys 0.23 cannot parse concurrent assertions
-  // and defines SYNTHESIS.
-`ifndef SYNTHESIS
-  // A held output must not change until it is taken.
-  a_output_stable: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (out_valid_o && !out_ready_i) |=> $stable(out_colour_o));
-`endif
-
 endmodule
+
+// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
+// simulation only: Yosys reads no bind).
+`ifndef SYNTHESIS
+bind tmu_specular_combine tmu_stream_check #(
+  .W($bits({in_diffuse_i, in_specular_i, in_reflectance_i}))
+) u_in_check (
+  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
+  .data_i({in_diffuse_i, in_specular_i, in_reflectance_i})
+);
+bind tmu_specular_combine tmu_stream_check #(
+  .W($bits(out_colour_o))
+) u_out_check (
+  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
+  .data_i(out_colour_o)
+);
+`endif
