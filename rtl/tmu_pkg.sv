@@ -205,6 +205,16 @@ package tmu_pkg;
   localparam int unsigned StatCountFrac = 0;
   typedef logic [StatCountW-1:0] stat_count_t;
 
+  // Flag: UQ1.0, a one-bit enable or flag
+  localparam int unsigned FlagW = 1;
+  localparam int unsigned FlagFrac = 0;
+  typedef logic [FlagW-1:0] flag_t;
+
+  // EnvSeed: UQ32.0, harness only, not a port: the seed of what a block's environment holds (a texture)
+  localparam int unsigned EnvSeedW = 32;
+  localparam int unsigned EnvSeedFrac = 0;
+  typedef logic [EnvSeedW-1:0] env_seed_t;
+
   // largest texture side in texels
   localparam int unsigned MaxTexSize = 4096;
 

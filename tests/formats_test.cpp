@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -11,7 +12,7 @@ namespace tmu::formats {
 namespace {
 
 TEST(FormatsTest, SvPackageMatchesTable) {
-  const std::string path = std::string(TMU_SOURCE_DIR) + "/rtl/tmu_pkg.sv";
+  const std::filesystem::path path = std::filesystem::path(TMU_SOURCE_DIR) / "rtl" / "tmu_pkg.sv";
   std::ifstream in(path);
   ASSERT_TRUE(in) << "cannot open " << path;
   std::stringstream checked_in;

@@ -85,10 +85,17 @@ uint32_t bilerp_rgb(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, uint
 }
 
 CacheBilinearUnit::CacheBilinearUnit(uint32_t width, uint32_t height, bool lookahead, FetchFn fetch)
-    : width_(width), height_(height), lookahead_(lookahead), fetch_(std::move(fetch)) {
+    : fetch_(std::move(fetch)) {
+  configure(width, height, lookahead);
+}
+
+void CacheBilinearUnit::configure(uint32_t width, uint32_t height, bool lookahead) {
   if (width == 0 || height == 0 || width > formats::kMaxTexSize || height > formats::kMaxTexSize) {
     throw std::invalid_argument("CacheBilinearUnit: texture size out of range");
   }
+  width_ = width;
+  height_ = height;
+  lookahead_ = lookahead;
 }
 
 void CacheBilinearUnit::write_clut(uint8_t index, uint32_t rgb) {

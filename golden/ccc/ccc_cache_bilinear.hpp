@@ -92,6 +92,11 @@ class CacheBilinearUnit {
 
   CacheBilinearUnit(uint32_t width, uint32_t height, bool lookahead, FetchFn fetch);
 
+  // A new configuration (texture size, lookahead) between batches, as the RTL's quasi-static
+  // cfg ports: the entries and statistics stay. The entries' tags mean block addresses of the
+  // old size until a CLUT write invalidates them, so a driver loads the CLUT after it.
+  void configure(uint32_t width, uint32_t height, bool lookahead);
+
   void write_clut(uint8_t index, uint32_t rgb);   // also invalidates every entry
   uint32_t sample(int32_t u_raw, int32_t v_raw);  // Rgb888
 
@@ -102,8 +107,8 @@ class CacheBilinearUnit {
   // Ensures the block is resident; returns true when it already was.
   bool ensure(BlockXY b);
 
-  uint32_t width_, height_;
-  bool lookahead_;
+  uint32_t width_ = 0, height_ = 0;
+  bool lookahead_ = false;
   FetchFn fetch_;
   std::array<uint32_t, 256> clut_{};
   std::array<CacheEntry, 4> entries_{};

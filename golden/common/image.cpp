@@ -1,32 +1,30 @@
 #include "common/image.hpp"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <limits>
 #include <memory>
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/image_file.hpp"
 
 namespace tmu {
 
 ImageRgb8 read_image(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
+  std::string why;
+  const auto in = open_image_file(path, &why);
   if (!in) {
-    std::string why = OIIO::geterror();
     throw InputError(path, "", "cannot read image: " + (why.empty() ? "unknown format" : why));
   }
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+  if (in->width() <= 0 || in->height() <= 0 || in->channels() <= 0) {
     throw InputError(path, "", "image has no pixels");
   }
-  const int nch = spec.nchannels;
-  std::vector<uint8_t> data(static_cast<size_t>(spec.width) * spec.height * nch);
-  if (!in->read_image(0, 0, 0, nch, OIIO::TypeDesc::UINT8, data.data())) {
-    throw InputError(path, "", "corrupt image data: " + in->geterror());
+  const int nch = in->channels();
+  std::vector<uint8_t> data(static_cast<size_t>(in->width()) * in->height() * nch);
+  if (!in->read_uint8(data.data())) {
+    throw InputError(path, "", "corrupt image data: " + in->error());
   }
-  ImageRgb8 img(spec.width, spec.height);
+  ImageRgb8 img(in->width(), in->height());
   for (size_t i = 0; i < img.pixels.size(); ++i) {
     const uint8_t* p = &data[i * nch];
     img.pixels[i] = nch >= 3 ? Rgb8{p[0], p[1], p[2]} : Rgb8{p[0], p[0], p[0]};
@@ -36,12 +34,18 @@ ImageRgb8 read_image(const std::string& path) {
 
 void write_image(const std::string& path, const ImageRgb8& image) {
   write_atomically(path, [&](const std::string& tmp) {
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw InputError(path, "", "no image writer for this extension");
-    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-    if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) ||
-        !out->close()) {
-      throw InputError(path, "", "cannot write image: " + out->geterror());
+    ImageFileSpec spec;
+    spec.width = image.width;
+    spec.height = image.height;
+    spec.channels = 3;
+    std::string why;
+    switch (write_image_file(path, tmp, spec, image.pixels.data(), &why)) {
+      case ImageWrite::kOk:
+        return;
+      case ImageWrite::kNoWriter:
+        throw InputError(path, "", "no image writer for this extension");
+      case ImageWrite::kFailed:
+        throw InputError(path, "", "cannot write image: " + why);
     }
   });
 }

@@ -1,4 +1,4 @@
-// An 8-bit RGB image and its file I/O through OpenImageIO.
+// An 8-bit RGB image and its file I/O (through OpenImageIO: common/image_file.hpp).
 #pragma once
 
 #include <cstdint>

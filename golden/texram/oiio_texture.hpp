@@ -9,6 +9,7 @@
 
 #include <string>
 
+#include "texram/oiio_sampler.hpp"  // make_oiio_texture, the anisotropic sampler
 #include "texram/sampler_config.hpp"
 #include "texram/texture.hpp"
 
@@ -17,13 +18,6 @@ namespace tmu::texram {
 // WrapPeriodic = wrap, WrapClamp = clamp, WrapMirror = mirror, WrapBlack = border (the same
 // only with a (0, 0, 0, 0) border colour).
 OIIO::TextureOpt::Wrap oiio_wrap(Border border);
-
-// Level 0 of `texture`, as `config` reads its texels (RGBA, the CLUT applied), turned into a
-// tiled, MIP-mapped float OpenEXR file by OIIO::ImageBufAlgo::make_texture (OIIO builds the
-// pyramid itself, with a box filter; float keeps every 8-bit value exact). Throws InputError
-// naming `path` when OpenImageIO fails.
-void make_oiio_texture(const std::string& path, const TexramTexture& texture,
-                       const SamplerConfig& config);
 
 // Every level of `texture` (our pyramid, read back through the bank layout as `config` reads
 // its texels) written as one MIP level of a tiled float OpenEXR file, so OIIO filters the same

@@ -17,51 +17,18 @@
 #include <cstdint>
 #include <systemc>
 
+#include "blocks/ccc_cache_bilinear/ccc_cache_bilinear_ports.hpp"
 #include "ccc/ccc_cache_bilinear.hpp"
 #include "ccc/ccc_texture.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/sc_ports.hpp"
 
 namespace tmu::hls {
 
 namespace fmts = tmu::formats;
 
 SC_MODULE(CccCacheBilinearSc) {
-  template <int W>
-  using uint_t = sc_dt::sc_uint<W>;
-  template <int W>
-  using int_t = sc_dt::sc_int<W>;
-  static constexpr int kStatWidth = fmts::kStatCount.width();
-
-  sc_core::sc_in<bool> clk_i{"clk_i"};
-  sc_core::sc_in<bool> rst_ni{"rst_ni"};
-
-  sc_core::sc_in<uint_t<fmts::kTexSize.width()>> cfg_width_i{"cfg_width_i"};
-  sc_core::sc_in<uint_t<fmts::kTexSize.width()>> cfg_height_i{"cfg_height_i"};
-  sc_core::sc_in<bool> cfg_lookahead_i{"cfg_lookahead_i"};
-
-  sc_core::sc_in<bool> clut_valid_i{"clut_valid_i"};
-  sc_core::sc_out<bool> clut_ready_o{"clut_ready_o"};
-  sc_core::sc_in<uint_t<fmts::kClutIndex.width()>> clut_addr_i{"clut_addr_i"};
-  sc_core::sc_in<uint_t<fmts::kRgb888.width()>> clut_rgb_i{"clut_rgb_i"};
-
-  sc_core::sc_in<bool> req_valid_i{"req_valid_i"};
-  sc_core::sc_out<bool> req_ready_o{"req_ready_o"};
-  sc_core::sc_in<int_t<fmts::kTexCoord.width()>> req_u_i{"req_u_i"};
-  sc_core::sc_in<int_t<fmts::kTexCoord.width()>> req_v_i{"req_v_i"};
-
-  sc_core::sc_out<bool> mem_req_valid_o{"mem_req_valid_o"};
-  sc_core::sc_in<bool> mem_req_ready_i{"mem_req_ready_i"};
-  sc_core::sc_out<uint_t<fmts::kCccBlockAddr.width()>> mem_req_addr_o{"mem_req_addr_o"};
-  sc_core::sc_in<bool> mem_resp_valid_i{"mem_resp_valid_i"};
-  sc_core::sc_in<uint_t<fmts::kCccBlock.width()>> mem_resp_block_i{"mem_resp_block_i"};
-
-  sc_core::sc_out<bool> out_valid_o{"out_valid_o"};
-  sc_core::sc_in<bool> out_ready_i{"out_ready_i"};
-  sc_core::sc_out<uint_t<fmts::kRgb888.width()>> out_rgb_o{"out_rgb_o"};
-
-  sc_core::sc_out<uint_t<kStatWidth>> stat_hits_o{"stat_hits_o"};
-  sc_core::sc_out<uint_t<kStatWidth>> stat_misses_o{"stat_misses_o"};
-  sc_core::sc_out<uint_t<kStatWidth>> stat_prefetches_o{"stat_prefetches_o"};
+  TMU_SC_PORTS(ccc_cache_bilinear)
 
   SC_CTOR(CccCacheBilinearSc) {
     SC_CTHREAD(run, clk_i.pos());
@@ -96,8 +63,8 @@ SC_MODULE(CccCacheBilinearSc) {
         for (ccc::CacheEntry& e : entries_) e.valid = false;  // the decoded colours are stale
       }
       if (req_valid_i.read()) {
-        serve(static_cast<int32_t>(req_u_i.read().to_int()),
-              static_cast<int32_t>(req_v_i.read().to_int()));
+        serve(static_cast<int32_t>(signed_value(req_u_i.read(), fmts::kTexCoord)),
+              static_cast<int32_t>(signed_value(req_v_i.read(), fmts::kTexCoord)));
       }
     }
   }

@@ -9,6 +9,7 @@
 
 #include "fixed/fixed.hpp"
 #include "formats/formats.hpp"
+#include "harness/row_classes.hpp"
 
 namespace tmu::hls {
 
@@ -24,34 +25,25 @@ int64_t signed_value(const Port& bits, const fx::Format& f) {
 
 }  // namespace tmu::hls
 
+// clang-format off
 #define TMU_SC_IN(port, w) sc_core::sc_in<::tmu::hls::sc_port_t<(w)>> port{#port};
 #define TMU_SC_OUT(port, w) sc_core::sc_out<::tmu::hls::sc_port_t<(w)>> port{#port};
 #define TMU_SC_IN_BIT(port) sc_core::sc_in<bool> port{#port};
 #define TMU_SC_OUT_BIT(port) sc_core::sc_out<bool> port{#port};
-#define TMU_SC_C(kind, ch) TMU_SC_C_##kind(ch)
-#define TMU_SC_C_Sample(ch) TMU_SC_IN_BIT(ch##_valid_i) TMU_SC_OUT_BIT(ch##_ready_o)
-#define TMU_SC_C_Write(ch) TMU_SC_C_Sample(ch)
-#define TMU_SC_C_Stream(ch) TMU_SC_C_Sample(ch)
-#define TMU_SC_C_Result(ch) TMU_SC_OUT_BIT(ch##_valid_o) TMU_SC_IN_BIT(ch##_ready_i)
-#define TMU_SC_C_MemRequest(ch) TMU_SC_C_Result(ch)
-#define TMU_SC_C_MemRequestNoReady(ch) TMU_SC_OUT_BIT(ch##_valid_o)
-#define TMU_SC_C_MemResponse(ch) TMU_SC_IN_BIT(ch##_valid_i)
-#define TMU_SC_C_CombIn(ch)
-#define TMU_SC_C_CombOut(ch)
-#define TMU_SC_C_Cfg(ch)
-#define TMU_SC_C_Stat(ch)
-#define TMU_SC_F(kind, ch, name, fmt, n) \
-  TMU_SC_F_##kind(ch, name, (n) * ::tmu::formats::k##fmt.width())
-#define TMU_SC_F_In(ch, name, w) TMU_SC_IN(ch##_##name##_i, w)
-#define TMU_SC_F_Resp(ch, name, w) TMU_SC_IN(ch##_##name##_i, w)
-#define TMU_SC_F_Cfg(ch, name, w) TMU_SC_IN(ch##_##name##_i, w)
-#define TMU_SC_F_Out(ch, name, w) TMU_SC_OUT(ch##_##name##_o, w)
-#define TMU_SC_F_Req(ch, name, w) TMU_SC_OUT(ch##_##name##_o, w)
-#define TMU_SC_F_Stat(ch, name, w) TMU_SC_OUT(ch##_##name##_o, w)
-#define TMU_SC_F_Env(ch, name, w)
+#define TMU_SC_Handshake(ch) TMU_SC_IN_BIT(ch##_valid_i) TMU_SC_OUT_BIT(ch##_ready_o)
+#define TMU_SC_Result(ch) TMU_SC_OUT_BIT(ch##_valid_o) TMU_SC_IN_BIT(ch##_ready_i)
+#define TMU_SC_ValidOut(ch) TMU_SC_OUT_BIT(ch##_valid_o)
+#define TMU_SC_ValidIn(ch) TMU_SC_IN_BIT(ch##_valid_i)
+#define TMU_SC_NoHandshake(ch)
+#define TMU_SC_Input(ch, name, n, w) TMU_SC_IN(ch##_##name##_i, (n) * (w))
+#define TMU_SC_Output(ch, name, n, w) TMU_SC_OUT(ch##_##name##_o, (n) * (w))
+#define TMU_SC_NoPort(ch, name, n, w)
+#define TMU_SC_C(kind, ch) TMU_ROW_C(TMU_SC_, kind, ch)
+#define TMU_SC_F(kind, ch, name, fmt, n) TMU_ROW_F(TMU_SC_, kind, ch, name, fmt, n)
 
 // In a module's body: clk_i, rst_ni and the block's ports.
 #define TMU_SC_PORTS(block) \
   TMU_SC_IN_BIT(clk_i)      \
   TMU_SC_IN_BIT(rst_ni)     \
   TMU_PORTS_##block(TMU_SC_C, TMU_SC_F)
+// clang-format on

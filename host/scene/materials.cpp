@@ -1,7 +1,6 @@
 // The materials of a scene file: where the texels come from and how the TEXRAM samples them
 // (scenes/README.md). Texture files are checked here (exist, readable, sides in range) so that
 // a scene either loads completely or names its first problem.
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include <bit>
@@ -10,6 +9,7 @@
 
 #include "ccc/ccc_texture.hpp"
 #include "common/error.hpp"
+#include "common/image_file.hpp"
 #include "formats/formats.hpp"
 #include "scene/scene_parts.hpp"
 
@@ -38,10 +38,10 @@ uint32_t to_rgba8888(const glm::dvec4& c) {
 }
 
 glm::ivec2 image_size(const JsonNode& node, const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) node.fail("cannot read the image " + path + ": " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  return {spec.width, spec.height};
+  std::string why;
+  const auto in = open_image_file(path, &why);
+  if (!in) node.fail("cannot read the image " + path + ": " + why);
+  return {in->width(), in->height()};
 }
 
 glm::ivec2 ccc_size(const JsonNode& node, const std::string& path) {

@@ -3,7 +3,6 @@
 #include <block_list.hpp>
 #include <stdexcept>
 
-#include "blocks/ccc_bilinear_block.hpp"
 #include "blocks/ccc_decoder_block.hpp"
 #include "blocks/coord_gen_block.hpp"
 #include "blocks/cube_map_block.hpp"
@@ -41,7 +40,7 @@ std::string underscores(std::string s) {
 }  // namespace
 
 std::vector<BlockVariant> block_variants() {
-#define TMU_VARIANT_ROW(block, key, options) {#block, key, options},
+#define TMU_VARIANT_ROW(block, key, top, options) {#block, key, top, options},
   return {TMU_BLOCK_VARIANTS(TMU_VARIANT_ROW)};
 #undef TMU_VARIANT_ROW
 }
@@ -50,36 +49,43 @@ std::vector<BlockInfo> block_list() {
   std::vector<BlockInfo> out;
   for (const Entry& e : kEntries) out.push_back(e.info());
   std::vector<BlockInfo> old = {
-      {"ccc", "CCC decoder (000 §3, Fig. 5): block word + texel address -> RGB888"},
-      {"ccc-bilinear",
-       "CCC low-cost unit (000 §4, Figs. 6-7): 4-entry block cache with lookahead + bilinear"},
+      {"ccc", "CCC decoder (000 §3, Fig. 5): block word + texel address -> RGB888", {}},
       {"mipgen",
        "TEXRAM mipmap generator (000 §12, Fig. 14): 2x2 box levels from a texel stream, bank "
-       "writes"},
+       "writes",
+       {}},
       {"trilinear",
        "TEXRAM trilinear unit (000 §2, §5, §6): 8-bank mipmap, border modes, texel "
-       "configurations, eq. 5"},
+       "configurations, eq. 5",
+       {}},
       {"footprint",
        "Footprint assembly (000 §10): N trilinear probes along the longer derivative, "
-       "averaged"},
+       "averaged",
+       {}},
       {"coord-gen",
        "Shading/environment-map coordinates (001 §5, eq. 17-22): seven tables -> uN, vN, "
-       "uR, vR, wR"},
+       "uR, vR, wR",
+       {}},
       {"cube-map",
        "Cube environment map addressing (000 §7): reflection vector -> face and texel "
-       "coordinate, dividing by the largest component (the normal encoder's divider)"},
+       "coordinate, dividing by the largest component (the normal encoder's divider)",
+       {}},
       {"deflect",
        "Bump deflection unit (001 §4.4, §6.2): phi_D - theta_N, first-octant s2s map "
-       "through a one-block MBR, + phi_N"},
+       "through a one-block MBR, + phi_N",
+       {}},
       {"normal-encoder",
        "Normal encoder (001 §4.1, eq. 12-16): (x, y, z) -> (phi, theta) by two seeded "
-       "Newton-Raphson dividers and angle tables"},
+       "Newton-Raphson dividers and angle tables",
+       {}},
       {"specular-combine",
        "Specular combine (000 §7 eq. 6, §8 eq. 7): per channel min(255, D + E R / 255), "
-       "alpha from D"},
+       "alpha from D",
+       {}},
       {"material",
        "Material unit (002 §4.2): registers and colour tables behind a write port; (u, v, "
-       "w) -> shape -> fractal sums -> marble, wood, brick, fog, cloud, fire RGB888"}};
+       "w) -> shape -> fractal sums -> marble, wood, brick, fog, cloud, fire RGB888",
+       {}}};
   for (BlockInfo& b : old) out.push_back(std::move(b));
   return out;
 }
@@ -101,7 +107,6 @@ std::unique_ptr<Block> make_block(const std::string& name_or_alias, const BlockO
     if (e.info().name == name) return e.make(options);
   }
   if (name == "ccc") return std::make_unique<CccDecoderBlock>(options.seed);
-  if (name == "ccc-bilinear") return std::make_unique<CccBilinearBlock>(options);
   if (name == "mipgen") return std::make_unique<MipgenBlock>(options);
   if (name == "trilinear") return std::make_unique<TrilinearBlock>(options);
   if (name == "footprint") return std::make_unique<FootprintBlock>(options);

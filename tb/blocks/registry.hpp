@@ -15,8 +15,8 @@ namespace tmu::tb {
 
 struct BlockOptions {
   uint64_t seed = 1;
-  std::string texture;    // ccc-bilinear: a .ccc file instead of a random texture
-  bool lookahead = true;  // ccc-bilinear: neighbour prefetch
+  std::string texture;            // ccc-bilinear: a .ccc file instead of a random texture
+  std::optional<bool> lookahead;  // ccc_cache_bilinear: neighbour prefetch (unset: drawn)
   // mipgen: the frame format; -1 draws it from the seed.
   int mip_log2_w = -1;      // log2 of the width, 0..10
   int mip_log2_h = -1;      // log2 of the height, 0..10
@@ -70,9 +70,9 @@ std::unique_ptr<Block> make_block(const std::string& name, const BlockOptions& o
 std::string block_name(const std::string& name);
 
 // Every variant of every block (rtl/blocks.cmake): the block, its variant key ("" the
-// default) and the `texsim cosim` options that select it.
+// default), its RTL top and the `texsim cosim` options that select it.
 struct BlockVariant {
-  std::string block, key, options;
+  std::string block, key, top, options;
 };
 std::vector<BlockVariant> block_variants();
 

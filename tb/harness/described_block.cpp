@@ -18,7 +18,7 @@ std::vector<Port> DescribedBlock::ports() const {
 }
 
 std::string DescribedBlock::repro_options() const {
-#define TMU_VARIANT_OPTIONS(block, key, options) \
+#define TMU_VARIANT_OPTIONS(block, key, top, options) \
   if (name() == #block && variant() == key) return options;
   TMU_BLOCK_VARIANTS(TMU_VARIANT_OPTIONS)
 #undef TMU_VARIANT_OPTIONS

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "harness/port_logic.hpp"
+#include "harness/row_classes.hpp"
 #include "harness/rtl_runner.hpp"
 
 namespace tmu::tb {
@@ -79,29 +80,18 @@ class PortsRtlAdapter : public RtlAdapter<M> {
 
 }  // namespace tmu::tb
 
-// The accessors of TMU_PORTS_<block>'s rows, for TMU_DESCRIBE_RTL (M is the model type).
-#define TMU_RTL_SET(port, n, w) \
-  +[](M& m, const uint64_t* v) { ::tmu::tb::rtl_put(m.port, v, n, w); }
-#define TMU_RTL_GET(port, n, w) \
-  +[](const M& m, uint64_t* v) { ::tmu::tb::rtl_get(m.port, v, n, w); }
-#define TMU_RTL_C(kind, ch) TMU_RTL_C_##kind(ch)
-#define TMU_RTL_C_Sample(ch) {TMU_RTL_SET(ch##_valid_i, 1, 1), TMU_RTL_GET(ch##_ready_o, 1, 1)},
-#define TMU_RTL_C_Write(ch) TMU_RTL_C_Sample(ch)
-#define TMU_RTL_C_Stream(ch) TMU_RTL_C_Sample(ch)
-#define TMU_RTL_C_Result(ch) {TMU_RTL_SET(ch##_ready_i, 1, 1), TMU_RTL_GET(ch##_valid_o, 1, 1)},
-#define TMU_RTL_C_MemRequest(ch) TMU_RTL_C_Result(ch)
-#define TMU_RTL_C_MemRequestNoReady(ch) {nullptr, TMU_RTL_GET(ch##_valid_o, 1, 1)},
-#define TMU_RTL_C_MemResponse(ch) {TMU_RTL_SET(ch##_valid_i, 1, 1), nullptr},
-#define TMU_RTL_C_CombIn(ch) {},
-#define TMU_RTL_C_CombOut(ch) {},
-#define TMU_RTL_C_Cfg(ch) {},
-#define TMU_RTL_C_Stat(ch) {},
-#define TMU_RTL_F(kind, ch, name, fmt, n) \
-  TMU_RTL_F_##kind(ch, name, n, ::tmu::formats::k##fmt.width())
-#define TMU_RTL_F_In(ch, name, n, w) {TMU_RTL_SET(ch##_##name##_i, n, w), nullptr},
-#define TMU_RTL_F_Resp(ch, name, n, w) TMU_RTL_F_In(ch, name, n, w)
-#define TMU_RTL_F_Cfg(ch, name, n, w) TMU_RTL_F_In(ch, name, n, w)
-#define TMU_RTL_F_Out(ch, name, n, w) {nullptr, TMU_RTL_GET(ch##_##name##_o, n, w)},
-#define TMU_RTL_F_Req(ch, name, n, w) TMU_RTL_F_Out(ch, name, n, w)
-#define TMU_RTL_F_Stat(ch, name, n, w) TMU_RTL_F_Out(ch, name, n, w)
-#define TMU_RTL_F_Env(ch, name, n, w) {},
+// The accessors of TMU_PORTS_<block>'s rows, for TMU_DESCRIBE (M is the model type).
+// clang-format off
+#define TMU_RTL_SET(port, n, w) +[](M& m, const uint64_t* v) { ::tmu::tb::rtl_put(m.port, v, n, w); }
+#define TMU_RTL_GET(port, n, w) +[](const M& m, uint64_t* v) { ::tmu::tb::rtl_get(m.port, v, n, w); }
+#define TMU_RTL_Handshake(ch) {TMU_RTL_SET(ch##_valid_i, 1, 1), TMU_RTL_GET(ch##_ready_o, 1, 1)},
+#define TMU_RTL_Result(ch) {TMU_RTL_SET(ch##_ready_i, 1, 1), TMU_RTL_GET(ch##_valid_o, 1, 1)},
+#define TMU_RTL_ValidOut(ch) {nullptr, TMU_RTL_GET(ch##_valid_o, 1, 1)},
+#define TMU_RTL_ValidIn(ch) {TMU_RTL_SET(ch##_valid_i, 1, 1), nullptr},
+#define TMU_RTL_NoHandshake(ch) {},
+#define TMU_RTL_Input(ch, name, n, w) {TMU_RTL_SET(ch##_##name##_i, n, w), nullptr},
+#define TMU_RTL_Output(ch, name, n, w) {nullptr, TMU_RTL_GET(ch##_##name##_o, n, w)},
+#define TMU_RTL_NoPort(ch, name, n, w) {},
+#define TMU_RTL_C(kind, ch) TMU_ROW_C(TMU_RTL_, kind, ch)
+#define TMU_RTL_F(kind, ch, name, fmt, n) TMU_ROW_F(TMU_RTL_, kind, ch, name, fmt, n)
+// clang-format on

@@ -12,6 +12,7 @@
 
 #include "harness/hls_runner.hpp"
 #include "harness/port_logic.hpp"
+#include "harness/row_classes.hpp"
 #include "hls/common/sc_ports.hpp"
 
 namespace tmu::tb {
@@ -65,94 +66,62 @@ class PortsScBench : public sc_core::sc_module, public ScAdapter {
 
 }  // namespace tmu::tb
 
+// clang-format off
+// The signals (TMU_SCS_), their binding to a module d (TMU_SCB_) and their accessors (TMU_SCR_).
 #define TMU_SCS_SIG(port, w) sc_core::sc_signal<::tmu::hls::sc_port_t<(w)>> port{#port};
 #define TMU_SCS_BIT(port) sc_core::sc_signal<bool> port{#port};
-#define TMU_SCS_C(kind, ch) TMU_SCS_C_##kind(ch)
-#define TMU_SCS_C_Sample(ch) TMU_SCS_BIT(ch##_valid_i) TMU_SCS_BIT(ch##_ready_o)
-#define TMU_SCS_C_Write(ch) TMU_SCS_C_Sample(ch)
-#define TMU_SCS_C_Stream(ch) TMU_SCS_C_Sample(ch)
-#define TMU_SCS_C_Result(ch) TMU_SCS_BIT(ch##_valid_o) TMU_SCS_BIT(ch##_ready_i)
-#define TMU_SCS_C_MemRequest(ch) TMU_SCS_C_Result(ch)
-#define TMU_SCS_C_MemRequestNoReady(ch) TMU_SCS_BIT(ch##_valid_o)
-#define TMU_SCS_C_MemResponse(ch) TMU_SCS_BIT(ch##_valid_i)
-#define TMU_SCS_C_CombIn(ch)
-#define TMU_SCS_C_CombOut(ch)
-#define TMU_SCS_C_Cfg(ch)
-#define TMU_SCS_C_Stat(ch)
-#define TMU_SCS_F(kind, ch, name, fmt, n) \
-  TMU_SCS_F_##kind(ch, name, (n) * ::tmu::formats::k##fmt.width())
-#define TMU_SCS_F_In(ch, name, w) TMU_SCS_SIG(ch##_##name##_i, w)
-#define TMU_SCS_F_Resp(ch, name, w) TMU_SCS_SIG(ch##_##name##_i, w)
-#define TMU_SCS_F_Cfg(ch, name, w) TMU_SCS_SIG(ch##_##name##_i, w)
-#define TMU_SCS_F_Out(ch, name, w) TMU_SCS_SIG(ch##_##name##_o, w)
-#define TMU_SCS_F_Req(ch, name, w) TMU_SCS_SIG(ch##_##name##_o, w)
-#define TMU_SCS_F_Stat(ch, name, w) TMU_SCS_SIG(ch##_##name##_o, w)
-#define TMU_SCS_F_Env(ch, name, w)
+#define TMU_SCS_Handshake(ch) TMU_SCS_BIT(ch##_valid_i) TMU_SCS_BIT(ch##_ready_o)
+#define TMU_SCS_Result(ch) TMU_SCS_BIT(ch##_valid_o) TMU_SCS_BIT(ch##_ready_i)
+#define TMU_SCS_ValidOut(ch) TMU_SCS_BIT(ch##_valid_o)
+#define TMU_SCS_ValidIn(ch) TMU_SCS_BIT(ch##_valid_i)
+#define TMU_SCS_NoHandshake(ch)
+#define TMU_SCS_Input(ch, name, n, w) TMU_SCS_SIG(ch##_##name##_i, (n) * (w))
+#define TMU_SCS_Output(ch, name, n, w) TMU_SCS_SIG(ch##_##name##_o, (n) * (w))
+#define TMU_SCS_NoPort(ch, name, n, w)
+#define TMU_SCS_C(kind, ch) TMU_ROW_C(TMU_SCS_, kind, ch)
+#define TMU_SCS_F(kind, ch, name, fmt, n) TMU_ROW_F(TMU_SCS_, kind, ch, name, fmt, n)
 
-#define TMU_SCB_C(kind, ch) TMU_SCB_C_##kind(ch)
-#define TMU_SCB_C_Sample(ch)    \
-  d.ch##_valid_i(ch##_valid_i); \
-  d.ch##_ready_o(ch##_ready_o);
-#define TMU_SCB_C_Write(ch) TMU_SCB_C_Sample(ch)
-#define TMU_SCB_C_Stream(ch) TMU_SCB_C_Sample(ch)
-#define TMU_SCB_C_Result(ch)    \
-  d.ch##_valid_o(ch##_valid_o); \
-  d.ch##_ready_i(ch##_ready_i);
-#define TMU_SCB_C_MemRequest(ch) TMU_SCB_C_Result(ch)
-#define TMU_SCB_C_MemRequestNoReady(ch) d.ch##_valid_o(ch##_valid_o);
-#define TMU_SCB_C_MemResponse(ch) d.ch##_valid_i(ch##_valid_i);
-#define TMU_SCB_C_CombIn(ch)
-#define TMU_SCB_C_CombOut(ch)
-#define TMU_SCB_C_Cfg(ch)
-#define TMU_SCB_C_Stat(ch)
-#define TMU_SCB_F(kind, ch, name, fmt, n) TMU_SCB_F_##kind(ch, name)
-#define TMU_SCB_F_In(ch, name) d.ch##_##name##_i(ch##_##name##_i);
-#define TMU_SCB_F_Resp(ch, name) TMU_SCB_F_In(ch, name)
-#define TMU_SCB_F_Cfg(ch, name) TMU_SCB_F_In(ch, name)
-#define TMU_SCB_F_Out(ch, name) d.ch##_##name##_o(ch##_##name##_o);
-#define TMU_SCB_F_Req(ch, name) TMU_SCB_F_Out(ch, name)
-#define TMU_SCB_F_Stat(ch, name) TMU_SCB_F_Out(ch, name)
-#define TMU_SCB_F_Env(ch, name)
+#define TMU_SCB(port) d.port(port);
+#define TMU_SCB_Handshake(ch) TMU_SCB(ch##_valid_i) TMU_SCB(ch##_ready_o)
+#define TMU_SCB_Result(ch) TMU_SCB(ch##_valid_o) TMU_SCB(ch##_ready_i)
+#define TMU_SCB_ValidOut(ch) TMU_SCB(ch##_valid_o)
+#define TMU_SCB_ValidIn(ch) TMU_SCB(ch##_valid_i)
+#define TMU_SCB_NoHandshake(ch)
+#define TMU_SCB_Input(ch, name, n, w) TMU_SCB(ch##_##name##_i)
+#define TMU_SCB_Output(ch, name, n, w) TMU_SCB(ch##_##name##_o)
+#define TMU_SCB_NoPort(ch, name, n, w)
+#define TMU_SCB_C(kind, ch) TMU_ROW_C(TMU_SCB_, kind, ch)
+#define TMU_SCB_F(kind, ch, name, fmt, n) TMU_ROW_F(TMU_SCB_, kind, ch, name, fmt, n)
 
 #define TMU_SCR_SET_BIT(port) +[](S& s, const uint64_t* v) { s.port.write(v[0] != 0); }
 #define TMU_SCR_GET_BIT(port) +[](const S& s, uint64_t* v) { v[0] = s.port.read(); }
 #define TMU_SCR_SET(port, n, w) +[](S& s, const uint64_t* v) { ::tmu::tb::sc_put(s.port, v, n, w); }
 #define TMU_SCR_GET(port, n, w) +[](const S& s, uint64_t* v) { ::tmu::tb::sc_get(s.port, v, n, w); }
-#define TMU_SCR_C(kind, ch) TMU_SCR_C_##kind(ch)
-#define TMU_SCR_C_Sample(ch) {TMU_SCR_SET_BIT(ch##_valid_i), TMU_SCR_GET_BIT(ch##_ready_o)},
-#define TMU_SCR_C_Write(ch) TMU_SCR_C_Sample(ch)
-#define TMU_SCR_C_Stream(ch) TMU_SCR_C_Sample(ch)
-#define TMU_SCR_C_Result(ch) {TMU_SCR_SET_BIT(ch##_ready_i), TMU_SCR_GET_BIT(ch##_valid_o)},
-#define TMU_SCR_C_MemRequest(ch) TMU_SCR_C_Result(ch)
-#define TMU_SCR_C_MemRequestNoReady(ch) {nullptr, TMU_SCR_GET_BIT(ch##_valid_o)},
-#define TMU_SCR_C_MemResponse(ch) {TMU_SCR_SET_BIT(ch##_valid_i), nullptr},
-#define TMU_SCR_C_CombIn(ch) {},
-#define TMU_SCR_C_CombOut(ch) {},
-#define TMU_SCR_C_Cfg(ch) {},
-#define TMU_SCR_C_Stat(ch) {},
-#define TMU_SCR_F(kind, ch, name, fmt, n) \
-  TMU_SCR_F_##kind(ch, name, n, ::tmu::formats::k##fmt.width())
-#define TMU_SCR_F_In(ch, name, n, w) {TMU_SCR_SET(ch##_##name##_i, n, w), nullptr},
-#define TMU_SCR_F_Resp(ch, name, n, w) TMU_SCR_F_In(ch, name, n, w)
-#define TMU_SCR_F_Cfg(ch, name, n, w) TMU_SCR_F_In(ch, name, n, w)
-#define TMU_SCR_F_Out(ch, name, n, w) {nullptr, TMU_SCR_GET(ch##_##name##_o, n, w)},
-#define TMU_SCR_F_Req(ch, name, n, w) TMU_SCR_F_Out(ch, name, n, w)
-#define TMU_SCR_F_Stat(ch, name, n, w) TMU_SCR_F_Out(ch, name, n, w)
-#define TMU_SCR_F_Env(ch, name, n, w) {},
+#define TMU_SCR_Handshake(ch) {TMU_SCR_SET_BIT(ch##_valid_i), TMU_SCR_GET_BIT(ch##_ready_o)},
+#define TMU_SCR_Result(ch) {TMU_SCR_SET_BIT(ch##_ready_i), TMU_SCR_GET_BIT(ch##_valid_o)},
+#define TMU_SCR_ValidOut(ch) {nullptr, TMU_SCR_GET_BIT(ch##_valid_o)},
+#define TMU_SCR_ValidIn(ch) {TMU_SCR_SET_BIT(ch##_valid_i), nullptr},
+#define TMU_SCR_NoHandshake(ch) {},
+#define TMU_SCR_Input(ch, name, n, w) {TMU_SCR_SET(ch##_##name##_i, n, w), nullptr},
+#define TMU_SCR_Output(ch, name, n, w) {nullptr, TMU_SCR_GET(ch##_##name##_o, n, w)},
+#define TMU_SCR_NoPort(ch, name, n, w) {},
+#define TMU_SCR_C(kind, ch) TMU_ROW_C(TMU_SCR_, kind, ch)
+#define TMU_SCR_F(kind, ch, name, fmt, n) TMU_ROW_F(TMU_SCR_, kind, ch, name, fmt, n)
 
 // TMU_DESCRIBE_SC(block): defines tmu::tb::desc::block_sc, a signal per port of
 // TMU_PORTS_<block> with bind(module) and rows(), the accessors in row order.
-#define TMU_DESCRIBE_SC(block)                                   \
-  namespace tmu::tb::desc {                                      \
-  struct block##_sc {                                            \
-    using ScSignals = block##_sc;                                \
-    TMU_PORTS_##block(TMU_SCS_C, TMU_SCS_F) template <class Dut> \
-    void bind(Dut& d) {                                          \
-      TMU_PORTS_##block(TMU_SCB_C, TMU_SCB_F)                    \
-    }                                                            \
-    static std::vector<::tmu::tb::PortRow<ScSignals>> rows() {   \
-      using S = ScSignals;                                       \
-      return {TMU_PORTS_##block(TMU_SCR_C, TMU_SCR_F)};          \
-    }                                                            \
-  };                                                             \
+#define TMU_DESCRIBE_SC(block)                                 \
+  namespace tmu::tb::desc {                                    \
+  struct block##_sc {                                          \
+    TMU_PORTS_##block(TMU_SCS_C, TMU_SCS_F)                    \
+    template <class Dut>                                       \
+    void bind(Dut& d) {                                        \
+      TMU_PORTS_##block(TMU_SCB_C, TMU_SCB_F)                  \
+    }                                                          \
+    static std::vector<::tmu::tb::PortRow<block##_sc>> rows() { \
+      using S = block##_sc;                                    \
+      return {TMU_PORTS_##block(TMU_SCR_C, TMU_SCR_F)};        \
+    }                                                          \
+  };                                                           \
   }
+// clang-format on

@@ -88,11 +88,13 @@ fs::path cache_dir() {
   return TMU_ICARUS_CACHE_DIR;
 }
 
-// The sources of `top` from rtl/manifest.txt, relative to rtl/, tmu_pkg.sv first. A row's
-// items are .sv files or earlier rows' tops, which stand for their sources; each file comes
-// once, where it first appears (the manifest's header; rtl/CMakeLists.txt and
+}  // namespace
+
+// A row's items are .sv files or earlier rows' tops, which stand for their sources; each file
+// comes once, where it first appears (the manifest's header; rtl/CMakeLists.txt and
 // scripts/manifest_sources.sh resolve it the same way).
-std::vector<std::string> manifest_sources(const fs::path& rtl, const std::string& top) {
+std::vector<std::string> manifest_sources(const std::string& top) {
+  const fs::path rtl = fs::path(TMU_SOURCE_DIR) / "rtl";
   std::map<std::string, std::vector<std::string>> rows;  // the rows before top's, resolved
   std::istringstream manifest(read_file(rtl / "manifest.txt"));
   for (std::string line; std::getline(manifest, line);) {
@@ -109,7 +111,7 @@ std::vector<std::string> manifest_sources(const fs::path& rtl, const std::string
       } else if (const auto row = rows.find(item); row != rows.end()) {
         for (const std::string& file : row->second) add(file);
       } else {
-        throw std::runtime_error("icarus: rtl/manifest.txt: " + name + ": " + item +
+        throw std::runtime_error("rtl/manifest.txt: " + name + ": " + item +
                                  " is neither a .sv file nor the top of an earlier row");
       }
     }
@@ -119,10 +121,8 @@ std::vector<std::string> manifest_sources(const fs::path& rtl, const std::string
     }
     rows.emplace(name, std::move(sources));
   }
-  throw std::runtime_error("icarus: " + top + " is not a block of rtl/manifest.txt");
+  throw std::runtime_error(top + " is not a top of rtl/manifest.txt");
 }
-
-}  // namespace
 
 std::string icarus_compat_source(const std::string& file, const std::string& text) {
   // Rule 3 (the package): the value of every `localparam int unsigned NameW = <number>;`,
@@ -172,7 +172,7 @@ std::string icarus_compile(const IcarusModel& model, double* compile_seconds) {
   // The rewritten sources (the mutation applied first, to the original text).
   std::vector<std::pair<std::string, std::string>> files;  // path in the model dir, text
   bool mutated = false;
-  for (const std::string& rel : manifest_sources(rtl, model.top)) {
+  for (const std::string& rel : manifest_sources(model.top)) {
     std::string text = read_file(rtl / rel);
     if (model.mutation && model.mutation->file == rel) {
       const size_t at = text.find(model.mutation->from);

@@ -57,6 +57,10 @@ std::unique_ptr<Engine> make_icarus_engine(const std::string& name, IcarusModel 
                                            const Schema& inputs, const Schema& outputs,
                                            ProducesOutput produces_output = nullptr);
 
+// The sources of a top of rtl/manifest.txt, relative to rtl/, in the order to read them
+// (tmu_pkg.sv first); throws std::runtime_error when the manifest does not have it.
+std::vector<std::string> manifest_sources(const std::string& top);
+
 // The compiled model (the .vvp file), compiling it if the cache lacks it; throws
 // std::runtime_error with iverilog's messages when it cannot. compile_seconds (if given) gets
 // the time spent compiling (0 when cached).

@@ -5,7 +5,7 @@
 #include <bit>
 #include <stdexcept>
 
-#include "blocks/ccc_bilinear_block.hpp"
+#include "blocks/ccc_cache_bilinear/ccc_cache_bilinear_block.hpp"
 #include "blocks/footprint_block.hpp"
 #include "blocks/mipgen_block.hpp"
 #include "blocks/trilinear_block.hpp"
@@ -231,8 +231,9 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
     if (lowcost) {
       run.kind = "lowcost";
       run.material = mat.name;
-      attach(run, std::make_shared<tb::CccBilinearBlock>(tb::BlockOptions{}, tex.ccc));
-      run.items = tb::bilinear_clut_load(*tex.ccc);
+      const auto block = std::make_shared<tb::CccCacheBilinearBlock>(tb::BlockOptions{}, tex.ccc);
+      attach(run, block);
+      run.items = block->setup_items();  // the texture's configuration and CLUT
       for (size_t i : frags)
         run.items.push_back(tb::bilinear_sample_item(records[i].u, records[i].v));
     } else {

@@ -1,6 +1,5 @@
 #include "render/render.hpp"
 
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/image.hpp"
+#include "common/image_file.hpp"
 #include "geometry/mesh.hpp"
 #include "harness/waveform.hpp"
 #include "raster/rasterizer.hpp"
@@ -81,12 +81,19 @@ void write_exr(const std::string& path, const Band& band, const host::Scene& sce
       px[at + static_cast<size_t>(c)] = static_cast<float>(ideal[k][c] / 255.0);
   }
   write_atomically(path, [&](const std::string& tmp) {
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw InputError(path, "", "no OpenEXR writer");
-    OIIO::ImageSpec spec(band.frame_width, band.row_end - band.row_begin, 3, OIIO::TypeDesc::FLOAT);
-    if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, px.data()) ||
-        !out->close()) {
-      throw InputError(path, "", "cannot write: " + out->geterror());
+    ImageFileSpec spec;
+    spec.width = band.frame_width;
+    spec.height = band.row_end - band.row_begin;
+    spec.channels = 3;
+    spec.format = PixelFormat::kFloat;
+    std::string why;
+    switch (write_image_file(path, tmp, spec, px.data(), &why)) {
+      case ImageWrite::kOk:
+        return;
+      case ImageWrite::kNoWriter:
+        throw InputError(path, "", "no OpenEXR writer");
+      case ImageWrite::kFailed:
+        throw InputError(path, "", "cannot write: " + why);
     }
   });
 }

@@ -1,6 +1,5 @@
 #include "render/tiles.hpp"
 
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,6 +8,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/image_file.hpp"
 
 namespace tmu::render {
 
@@ -35,15 +35,21 @@ std::pair<int, int> parse_tile(const std::string& text) {
 
 void write_band(const std::string& path, const ImageRgb8& image, const Band& band) {
   write_atomically(path, [&](const std::string& tmp) {
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw InputError(path, "", "no image writer for this extension");
-    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("tmu:band", fmt::format("{}/{}", band.index, band.count));
-    spec.attribute("tmu:frame", fmt::format("{}x{}", band.frame_width, band.frame_height));
-    spec.attribute("tmu:rows", fmt::format("{}-{}", band.row_begin, band.row_end));
-    if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) ||
-        !out->close()) {
-      throw InputError(path, "", "cannot write image: " + out->geterror());
+    ImageFileSpec spec;
+    spec.width = image.width;
+    spec.height = image.height;
+    spec.channels = 3;
+    spec.attributes = {{"tmu:band", fmt::format("{}/{}", band.index, band.count)},
+                       {"tmu:frame", fmt::format("{}x{}", band.frame_width, band.frame_height)},
+                       {"tmu:rows", fmt::format("{}-{}", band.row_begin, band.row_end)}};
+    std::string why;
+    switch (write_image_file(path, tmp, spec, image.pixels.data(), &why)) {
+      case ImageWrite::kOk:
+        return;
+      case ImageWrite::kNoWriter:
+        throw InputError(path, "", "no image writer for this extension");
+      case ImageWrite::kFailed:
+        throw InputError(path, "", "cannot write image: " + why);
     }
   });
 }
@@ -52,13 +58,13 @@ ImageRgb8 merge_bands(const std::vector<std::string>& paths) {
   std::map<int, std::pair<Band, ImageRgb8>> bands;  // by first row
   int width = -1, height = -1, count = -1;
   for (const std::string& path : paths) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw InputError(path, "", "cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
+    std::string why;
+    const auto in = open_image_file(path, &why);
+    if (!in) throw InputError(path, "", "cannot read image: " + why);
     Band b;
-    const std::string band = spec.get_string_attribute("tmu:band");
-    const std::string frame = spec.get_string_attribute("tmu:frame");
-    const std::string rows = spec.get_string_attribute("tmu:rows");
+    const std::string band = in->attribute("tmu:band");
+    const std::string frame = in->attribute("tmu:frame");
+    const std::string rows = in->attribute("tmu:rows");
     if (std::sscanf(band.c_str(), "%d/%d", &b.index, &b.count) != 2 ||
         std::sscanf(frame.c_str(), "%dx%d", &b.frame_width, &b.frame_height) != 2 ||
         std::sscanf(rows.c_str(), "%d-%d", &b.row_begin, &b.row_end) != 2) {
@@ -74,16 +80,16 @@ ImageRgb8 merge_bands(const std::vector<std::string>& paths) {
                        fmt::format("band of a {}x{} frame in {} bands, the first was {}x{} in {}",
                                    b.frame_width, b.frame_height, b.count, width, height, count));
     }
-    if (spec.width != width || spec.height != b.row_end - b.row_begin) {
+    if (in->width() != width || in->height() != b.row_end - b.row_begin) {
       throw InputError(path, "size", "image size does not match its band");
     }
-    ImageRgb8 img(spec.width, spec.height);
-    std::vector<uint8_t> data(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, data.data())) {
-      throw InputError(path, "", "corrupt image data: " + in->geterror());
+    ImageRgb8 img(in->width(), in->height());
+    std::vector<uint8_t> data(static_cast<size_t>(in->width()) * in->height() * in->channels());
+    if (!in->read_uint8(data.data())) {
+      throw InputError(path, "", "corrupt image data: " + in->error());
     }
     for (size_t i = 0; i < img.pixels.size(); ++i) {
-      const uint8_t* p = &data[i * static_cast<size_t>(spec.nchannels)];
+      const uint8_t* p = &data[i * static_cast<size_t>(in->channels())];
       img.pixels[i] = {p[0], p[1], p[2]};
     }
     if (!bands.emplace(b.row_begin, std::pair{b, std::move(img)}).second) {

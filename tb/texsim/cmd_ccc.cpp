@@ -8,7 +8,7 @@
 #include <memory>
 #include <optional>
 
-#include "blocks/ccc_bilinear_block.hpp"
+#include "blocks/ccc_cache_bilinear/ccc_cache_bilinear_block.hpp"
 #include "blocks/ccc_decoder_block.hpp"
 #include "ccc/ccc_decoder.hpp"
 #include "ccc/ccc_encoder.hpp"
@@ -82,9 +82,10 @@ std::optional<ImageRgb8> magnify_through_unit(const std::string& ccc_path,
                                               const ccc::Texture& tex) {
   tb::BlockOptions opt;
   opt.texture = ccc_path;
-  const tb::CccBilinearBlock block(opt);
+  const tb::CccCacheBilinearBlock block(opt);
   const uint32_t w = 2 * tex.width, h = 2 * tex.height;
-  const std::vector<tb::Txn> items = tb::bilinear_resample_items(tex, w, h);
+  std::vector<tb::Txn> items = block.setup_items();
+  for (const tb::Txn& t : tb::bilinear_resample_items(tex, w, h)) items.push_back(t);
   const tb::RunResult golden = block.engine("golden")->run(items, tb::RunOptions{});
   const tb::RunResult rtl = block.engine("rtl")->run(items, tb::RunOptions{});
   if (!rtl.error.empty())
@@ -106,7 +107,7 @@ std::optional<ImageRgb8> magnify_through_unit(const std::string& ccc_path,
     }
     fmt::print(
         "MISMATCH: {} of {} pixels differ (or the counters do); reproduce with "
-        "texsim cosim ccc-bilinear --texture {}\n",
+        "texsim cosim ccc_cache_bilinear --texture {}\n",
         differ, size_t{w} * h, ccc_path);
     return std::nullopt;
   }

@@ -8,6 +8,7 @@
 #include "blocks/registry.hpp"
 #include "texsim/commands.hpp"
 #include "texsim/model_levels.hpp"
+#include "texsim/oiio_plugin.hpp"
 
 namespace tmu::texsim {
 
@@ -50,6 +51,7 @@ void add_levels_command(CLI::App& app, ExitCode& exit_code) {
                   "caught)");
   cmd->add_option("--markdown", args->markdown, "Also write the blocks' table as Markdown here");
   cmd->callback([args, &exit_code] {
+    if (!args->scene.empty()) load_oiio_plugin();  // before the first render's clock starts
     std::vector<BlockLevels> results;
     for (const std::string& name : args->blocks) {
       const std::string block = tb::block_name(name);

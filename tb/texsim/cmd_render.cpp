@@ -9,6 +9,7 @@
 #include "render/render.hpp"
 #include "render/tiles.hpp"
 #include "texsim/commands.hpp"
+#include "texsim/oiio_plugin.hpp"
 
 namespace tmu::texsim {
 
@@ -52,6 +53,7 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
                   "Flip a bit of fragment N's result (to see --check fail)");
   cmd->add_flag("--no-progress", a->no_progress, "No progress bar");
   cmd->callback([a, &exit_code] {
+    load_oiio_plugin();  // before the report's clock starts
     render::RenderOptions o = a->options;
     o.level = *render::parse_level(a->engine);
     if (!a->check.empty()) o.check = render::parse_level(a->check);

@@ -21,6 +21,7 @@
 #include "texram/trilinear.hpp"
 #include "texram/trilinear_ideal.hpp"
 #include "texsim/commands.hpp"
+#include "texsim/oiio_plugin.hpp"
 #include "texsim/sweep_all.hpp"
 #include "texsim/sweep_deflection.hpp"
 #include "texsim/sweep_footprint.hpp"
@@ -233,6 +234,7 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       ->check(CLI::Range(1, 16));
   cmd->add_flag("--quick", fp->quick, "footprint: half the frame and k = 4 (for tests)");
   cmd->callback([args, fp, cmd] {
+    load_oiio_plugin();  // before any sweep's clock starts
     if (args->block == "all") {
       for (const char* o : {"--settings", "--requests", "--k", "--quick", "--markdown"}) {
         if (cmd->count(o) > 0) throw CLI::ValidationError(o, "not for `sweep all`");

@@ -84,7 +84,7 @@ std::shared_ptr<CosimArgs> add_cosim_options(CLI::App& app) {
   cmd->add_option("--inject-fault", args->cosim.inject_fault,
                   "Flip one bit of output N of every engine, to see the scoreboard catch it");
   cmd->add_option("--texture", args->block_options.texture,
-                  "ccc-bilinear: texture (.ccc) instead of a random one")
+                  "ccc_cache_bilinear: a texture (.ccc) instead of random ones")
       ->check(CLI::ExistingFile);
   cmd->add_option("--mip-log2-w", args->block_options.mip_log2_w,
                   "mipgen: log2 frame width 0..10 (default: from the seed)")
@@ -114,7 +114,7 @@ std::shared_ptr<CosimArgs> add_cosim_options(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag(
       "--no-lookahead", [args](int64_t) { args->block_options.lookahead = false; },
-      "ccc-bilinear: disable the neighbour prefetch");
+      "ccc_cache_bilinear: the neighbour prefetch off (default: on, drawn for later batches)");
   // trilinear: each option given overrides the environment drawn from the seed.
   auto* tri =
       cmd->add_option_group("trilinear", "trilinear: override the environment drawn from the seed");

@@ -15,7 +15,6 @@
 // pixels, those whose every sub-pixel sees the pixel's material.
 #include "texsim/sweep_footprint.hpp"
 
-#include <OpenImageIO/texture.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -38,7 +37,7 @@
 #include "raster/rasterizer.hpp"
 #include "render/pipeline.hpp"
 #include "scene/scene.hpp"
-#include "texram/oiio_texture.hpp"
+#include "texram/oiio_sampler.hpp"
 #include "texram/trilinear.hpp"
 #include "texsim/sweep_support.hpp"
 
@@ -203,8 +202,8 @@ Outcome run_ideal(const Frame& f, footprint::Direction direction) {
 }
 
 // OIIO's own count: "Average anisotropic probes : X" of its statistics text.
-std::optional<double> oiio_average_probes(OIIO::TextureSystem& ts) {
-  std::istringstream stats(ts.getstats(1, false));
+std::optional<double> oiio_average_probes(texram::OiioAnisoSampler& ts) {
+  std::istringstream stats(ts.statistics());
   const std::string key = "Average anisotropic probes :";
   for (std::string line; std::getline(stats, line);) {
     const size_t at = line.find(key);
@@ -229,21 +228,12 @@ Outcome run_oiio(const Frame& f, const std::filesystem::path& dir, double* make_
     texram::make_oiio_texture(files.back(), *f.textures[m].texram, f.scene.materials[m].sampler);
   }
   *make_seconds = since(t);
-  std::unique_ptr<OIIO::TextureSystem, void (*)(OIIO::TextureSystem*)> ts(
-      OIIO::TextureSystem::create(false),
-      [](OIIO::TextureSystem* p) { OIIO::TextureSystem::destroy(p); });
-  std::vector<OIIO::TextureOpt> options(f.scene.materials.size());
-  std::vector<OIIO::TextureSystem::TextureHandle*> handles;
-  for (size_t m = 0; m < options.size(); ++m) {
+  std::vector<texram::OiioTextureFile> textures;
+  for (size_t m = 0; m < files.size(); ++m) {
     const texram::SamplerConfig& s = f.scene.materials[m].sampler;
-    options[m].mipmode = OIIO::TextureOpt::MipModeAniso;
-    options[m].interpmode = OIIO::TextureOpt::InterpBilinear;
-    options[m].anisotropic = 1 << kMaxProbeLog2;
-    options[m].swrap = texram::oiio_wrap(s.border_u);
-    options[m].twrap = texram::oiio_wrap(s.border_v);
-    handles.push_back(ts->get_texture_handle(OIIO::ustring(files[m])));
+    textures.push_back({files[m], s.border_u, s.border_v});
   }
-  OIIO::TextureSystem::Perthread* thread_info = ts->get_perthread_info();
+  const auto ts = texram::make_oiio_aniso_sampler(textures, 1 << kMaxProbeLog2);
   Outcome o;
   o.rgba.resize(f.records.size());
   o.seconds = best_time([&] {
@@ -252,11 +242,10 @@ Outcome run_oiio(const Frame& f, const std::filesystem::path& dir, double* make_
       const auto m = static_cast<size_t>(g.material);
       const double w = f.textures[m].size.x, h = f.textures[m].size.y;
       float got[4] = {0, 0, 0, 0};
-      if (!ts->texture(handles[m], thread_info, options[m], static_cast<float>(g.uv.x / w),
-                       static_cast<float>(g.uv.y / h), static_cast<float>(g.r1.x / w),
-                       static_cast<float>(g.r1.y / h), static_cast<float>(g.r2.x / w),
-                       static_cast<float>(g.r2.y / h), 4, got)) {
-        throw InputError(files[m], "", "OpenImageIO texture lookup failed: " + ts->geterror());
+      if (!ts->lookup(m, static_cast<float>(g.uv.x / w), static_cast<float>(g.uv.y / h),
+                      static_cast<float>(g.r1.x / w), static_cast<float>(g.r1.y / h),
+                      static_cast<float>(g.r2.x / w), static_cast<float>(g.r2.y / h), got)) {
+        throw InputError(files[m], "", "OpenImageIO texture lookup failed: " + ts->error());
       }
       const texram::SamplerConfig& s = f.sampler(i);
       std::array<double, 4> c{};

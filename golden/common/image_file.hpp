@@ -1,0 +1,52 @@
+// Image files through OpenImageIO, behind an interface without its types. Every image file of
+// the project is read and written through these two functions; image_file_oiio.cpp implements
+// them. Why not OIIO directly: texsim reaches OpenImageIO only through a plugin it loads when a
+// command first touches an image (tb/texsim/oiio_plugin.hpp), because loading OpenImageIO's
+// ~250 shared libraries costs ~0.3 s of CPU that short commands such as `texsim formats` need
+// not pay. Callers keep their own error messages; these return OpenImageIO's reasons.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tmu {
+
+// An image file open for reading (OIIO::ImageInput): the first subimage's header, its pixels.
+class ImageFileReader {
+ public:
+  virtual ~ImageFileReader() = default;
+  virtual int width() const = 0;
+  virtual int height() const = 0;
+  virtual int channels() const = 0;
+  // A string attribute of the header, "" when there is none (texsim's bands carry their
+  // place in the frame as PNG text).
+  virtual std::string attribute(const std::string& name) const = 0;
+  // Every channel of every pixel as 8 bits, row-major, interleaved: width x height x channels
+  // bytes into `data`. False on failure; error() says why.
+  virtual bool read_uint8(uint8_t* data) = 0;
+  virtual std::string error() = 0;
+};
+
+// Opens `path`; nullptr when no reader can, with OpenImageIO's reason (possibly empty) in *why.
+std::unique_ptr<ImageFileReader> open_image_file(const std::string& path, std::string* why);
+
+enum class PixelFormat { kUint8, kFloat };
+
+struct ImageFileSpec {
+  int width = 0, height = 0, channels = 0;
+  PixelFormat format = PixelFormat::kUint8;
+  std::vector<std::pair<std::string, std::string>> attributes;  // string attributes to store
+};
+
+enum class ImageWrite { kOk, kNoWriter, kFailed };
+
+// Writes `pixels` (spec's format, row-major, interleaved) to `file` in the format that
+// `format_path`'s extension names: an atomic write passes the target there and its temporary
+// as `file`. kNoWriter: no writer for that extension; kFailed: *error says why.
+ImageWrite write_image_file(const std::string& format_path, const std::string& file,
+                            const ImageFileSpec& spec, const void* pixels, std::string* error);
+
+}  // namespace tmu

@@ -1,0 +1,54 @@
+// The image file interface (image_file.hpp) on OpenImageIO. In texsim this file is part of its
+// OpenImageIO plugin (tb/texsim/oiio_plugin.hpp); everything else links it directly.
+#include <OpenImageIO/imageio.h>
+
+#include "common/image_file.hpp"
+
+namespace tmu {
+namespace {
+
+class OiioReader final : public ImageFileReader {
+ public:
+  explicit OiioReader(std::unique_ptr<OIIO::ImageInput> in) : in_(std::move(in)) {}
+  int width() const override { return in_->spec().width; }
+  int height() const override { return in_->spec().height; }
+  int channels() const override { return in_->spec().nchannels; }
+  std::string attribute(const std::string& name) const override {
+    return in_->spec().get_string_attribute(name);
+  }
+  bool read_uint8(uint8_t* data) override {
+    return in_->read_image(0, 0, 0, in_->spec().nchannels, OIIO::TypeDesc::UINT8, data);
+  }
+  std::string error() override { return in_->geterror(); }
+
+ private:
+  std::unique_ptr<OIIO::ImageInput> in_;
+};
+
+}  // namespace
+
+std::unique_ptr<ImageFileReader> open_image_file(const std::string& path, std::string* why) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) {
+    *why = OIIO::geterror();
+    return nullptr;
+  }
+  return std::make_unique<OiioReader>(std::move(in));
+}
+
+ImageWrite write_image_file(const std::string& format_path, const std::string& file,
+                            const ImageFileSpec& spec, const void* pixels, std::string* error) {
+  auto out = OIIO::ImageOutput::create(format_path);
+  if (!out) return ImageWrite::kNoWriter;
+  const OIIO::TypeDesc type =
+      spec.format == PixelFormat::kFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
+  OIIO::ImageSpec s(spec.width, spec.height, spec.channels, type);
+  for (const auto& [name, value] : spec.attributes) s.attribute(name, value);
+  if (!out->open(file, s) || !out->write_image(type, pixels) || !out->close()) {
+    *error = out->geterror();
+    return ImageWrite::kFailed;
+  }
+  return ImageWrite::kOk;
+}
+
+}  // namespace tmu
