@@ -12,11 +12,11 @@
 ///                   random initial values); it states the rule for a 4-state simulator.
 ///
 /// The instance names the channel (u_<ch>_check), so a failure reads e.g. "Assertion failed
-/// in TOP.tmu_ccc_decoder.u_out_check.a_data_stable". Simulation only: Verilator reads this
-/// file for every block without the manifest listing it; Yosys and the Icarus engine (both
-/// with SYNTHESIS defined, where the binds vanish) do not read it, and its body is empty under
-/// SYNTHESIS anyway (Yosys 0.23 cannot parse concurrent assertions). Not counted for coverage:
-/// its ports are the channel's signals, already counted in the block.
+/// in TOP.tmu_ccc_decoder.u_out_check.a_data_stable". Simulation only: what runs Verilator
+/// reads it for every block, unlisted (rtl/manifest.txt's header); Yosys and the Icarus engine
+/// (both with SYNTHESIS defined, where the binds vanish) do not read it, and its body is empty
+/// under SYNTHESIS anyway (Yosys 0.23 cannot parse concurrent assertions). Not counted for
+/// coverage: its ports are the channel's signals, already counted in the block.
 module tmu_stream_check #(
   /// Payload bits (at least 1).
   parameter int unsigned W = 1
