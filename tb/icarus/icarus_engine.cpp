@@ -95,12 +95,14 @@ fs::path cache_dir() {
 // scripts/manifest_sources.sh resolve it the same way).
 std::vector<std::string> manifest_sources(const std::string& top) {
   const fs::path rtl = fs::path(TMU_SOURCE_DIR) / "rtl";
-  std::map<std::string, std::vector<std::string>> rows;  // the rows before top's, resolved
+  std::map<std::string, std::vector<std::string>> rows;  // every row, resolved
   std::istringstream manifest(read_file(rtl / "manifest.txt"));
   for (std::string line; std::getline(manifest, line);) {
     std::istringstream fields(line);
     std::string name;
     if (!(fields >> name) || name.starts_with("#")) continue;
+    if (rows.contains(name))
+      throw std::runtime_error("rtl/manifest.txt: " + name + " has two rows");
     std::vector<std::string> sources;
     const auto add = [&sources](const std::string& file) {
       if (std::find(sources.begin(), sources.end(), file) == sources.end()) sources.push_back(file);
@@ -115,13 +117,13 @@ std::vector<std::string> manifest_sources(const std::string& top) {
                                  " is neither a .sv file nor the top of an earlier row");
       }
     }
-    if (name == top) {
-      sources.insert(sources.begin(), "tmu_pkg.sv");
-      return sources;
-    }
     rows.emplace(name, std::move(sources));
   }
-  throw std::runtime_error(top + " is not a top of rtl/manifest.txt");
+  const auto row = rows.find(top);
+  if (row == rows.end()) throw std::runtime_error(top + " is not a top of rtl/manifest.txt");
+  std::vector<std::string> sources = {"tmu_pkg.sv"};
+  sources.insert(sources.end(), row->second.begin(), row->second.end());
+  return sources;
 }
 
 std::string icarus_compat_source(const std::string& file, const std::string& text) {
