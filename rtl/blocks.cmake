@@ -172,7 +172,7 @@ tmu_mutant(noise hash FILE perlin/tmu_noise.sv
 tmu_mutant(noise fade FILE perlin/tmu_noise.sv
   FROM "FW'((num + (64'(1) << (3 * S - 1))) >> (3 * S))" TO "FW'(num >> (3 * S))"
   WHY "the fade table truncates instead of rounding half up")
-tmu_mutant(noise unreset FILE perlin/tmu_noise.sv EXPECT x-leak
+tmu_mutant(noise unreset FILE common/tmu_pipe_ctrl.sv EXPECT x-leak
   FROM "      valid_q <= '0;\n" TO ""
   WHY "the stage valids keep their initial values through reset (random samples leave)")
 

@@ -152,11 +152,12 @@ figures_top() {
   printf "%-28s %10s %10s %10s %12s %6s %8s\n" block cells flops logic memory_bits depth yosys_s
 status=0
 seen=()
-while read -r top sources; do
-  [[ -z "$top" || "$top" == \#* ]] && continue
+manifest=$root/scripts/manifest_sources.sh  # rtl/manifest.txt's rows resolved
+for top in $("$manifest"); do
   [[ ${#tops[@]} -gt 0 && ! " ${tops[*]} " =~ " $top " ]] && continue
   seen+=("$top")
   ((list)) && { echo "$top"; continue; }
+  sources=$("$manifest" "$top")
   read_cmd="read_verilog -sv $rtl/tmu_pkg.sv"
   for s in $sources; do read_cmd+=" $rtl/$s"; done
   read_cmd+=";"
@@ -167,7 +168,7 @@ while read -r top sources; do
   else
     check_top "$top" "$read_cmd" || status=1
   fi
-done < "$rtl/manifest.txt"
+done
 
 for t in "${tops[@]}"; do
   [[ " ${seen[*]} " =~ " $t " ]] || bad "'$t' is not a top of rtl/manifest.txt"

@@ -518,20 +518,6 @@ module tmu_ccc_cache_bilinear (
   // They run under Verilator (--assert); Yosys 0.23 cannot parse concurrent assertions and
   // defines SYNTHESIS.
 `ifndef SYNTHESIS
-  // A held output must not change until it is taken.
-  property p_output_stable;
-    @(posedge clk_i) disable iff (!rst_ni)
-      (out_valid_o && !out_ready_i) |=> (out_valid_o && $stable(out_rgb_o));
-  endproperty
-  a_output_stable: assert property (p_output_stable);
-
-  // A memory request is held, with its address, until the memory takes it.
-  property p_mem_req_stable;
-    @(posedge clk_i) disable iff (!rst_ni)
-      (mem_req_valid_o && !mem_req_ready_i) |=> (mem_req_valid_o && $stable(mem_req_addr_o));
-  endproperty
-  a_mem_req_stable: assert property (p_mem_req_stable);
-
   // Every fetched block is inside the texture.
   logic [BlockW:0] blocks_high;
   assign blocks_high = (BlockW + 1)'((cfg_height_i + SizeW'(3)) >> 2);
@@ -567,3 +553,32 @@ module tmu_ccc_cache_bilinear (
 `endif
 
 endmodule
+
+// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
+// simulation only: Yosys reads no bind).
+`ifndef SYNTHESIS
+bind tmu_ccc_cache_bilinear tmu_stream_check #(
+  .W($bits({clut_addr_i, clut_rgb_i}))
+) u_clut_check (
+  .clk_i, .rst_ni, .valid_i(clut_valid_i), .ready_i(clut_ready_o),
+  .data_i({clut_addr_i, clut_rgb_i})
+);
+bind tmu_ccc_cache_bilinear tmu_stream_check #(
+  .W($bits({req_u_i, req_v_i}))
+) u_req_check (
+  .clk_i, .rst_ni, .valid_i(req_valid_i), .ready_i(req_ready_o),
+  .data_i({req_u_i, req_v_i})
+);
+bind tmu_ccc_cache_bilinear tmu_stream_check #(
+  .W($bits(mem_req_addr_o))
+) u_mem_req_check (
+  .clk_i, .rst_ni, .valid_i(mem_req_valid_o), .ready_i(mem_req_ready_i),
+  .data_i(mem_req_addr_o)
+);
+bind tmu_ccc_cache_bilinear tmu_stream_check #(
+  .W($bits(out_rgb_o))
+) u_out_check (
+  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
+  .data_i(out_rgb_o)
+);
+`endif

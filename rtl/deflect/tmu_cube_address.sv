@@ -64,23 +64,24 @@ module tmu_cube_address #(
     $error("tmu_cube_address: built for 16-bit components, 4-bit L, 24-bit coordinates");
   end
 
-  // ---- Pipeline control -------------------------------------------------------------------
+  // ---- Pipeline control: tmu_pipe_ctrl ------------------------------------------------------
 
-  // valid_q[j]: stage j holds a vector; load[j]: stage j takes stage j - 1's at this edge.
-  logic [NumStages:1] valid_q, load;
-  logic               advance;
+  // valid[j]: stage j holds a vector; load[j]: stage j takes stage j - 1's at this edge.
+  logic [NumStages:1] valid, load;
 
-  assign advance    = !valid_q[NumStages] || out_ready_i;
-  assign in_ready_o = advance;
-  assign load       = advance ? {valid_q[NumStages-1:1], in_valid_i} : '0;
-
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      valid_q <= '0;
-    end else if (advance) begin
-      valid_q <= {valid_q[NumStages-1:1], in_valid_i};
-    end
-  end
+  tmu_pipe_ctrl #(.NumStages(NumStages)) u_pipe_ctrl (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .in_valid_i  (in_valid_i),
+    .in_ready_o  (in_ready_o),
+    .out_valid_o (out_valid_o),
+    .out_ready_i (out_ready_i),
+    .valid_o     (valid),
+    .load_o      (load)
+  );
+  // The stages load on load[j]; nothing here reads their valids.
+  logic unused_valid;
+  assign unused_valid = ^valid;
 
   // ---- -> S1: signs and magnitudes ------------------------------------------------------------
 
@@ -174,10 +175,9 @@ module tmu_cube_address #(
   tmu_pkg::cube_face_t s7_face_q;
   tmu_pkg::tex_coord_t s7_u_q, s7_v_q;
 
-  assign out_valid_o = valid_q[NumStages];
-  assign out_face_o  = s7_face_q;
-  assign out_u_o     = s7_u_q;
-  assign out_v_o     = s7_v_q;
+  assign out_face_o = s7_face_q;
+  assign out_u_o    = s7_u_q;
+  assign out_v_o    = s7_v_q;
 
   // ---- Data registers: only read while their stage is valid, no reset --------------------------
 
@@ -209,9 +209,6 @@ module tmu_cube_address #(
   // Assertions run under Verilator (--assert); Yosys 0.23 cannot parse concurrent assertions
   // and defines SYNTHESIS.
 `ifndef SYNTHESIS
-  // A held output must not change until it is taken.
-  a_output_stable: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (out_valid_o && !out_ready_i) |=> $stable({out_face_o, out_u_o, out_v_o}));
   // The dividers see a face coordinate no larger than the major component.
   a_ratio_at_most_one: assert property (@(posedge clk_i) disable iff (!rst_ni)
       load[3] |-> (s2_sc_q <= s2_ma_q && s2_tc_q <= s2_ma_q));
@@ -221,3 +218,20 @@ module tmu_cube_address #(
 `endif
 
 endmodule
+
+// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
+// simulation only: Yosys reads no bind).
+`ifndef SYNTHESIS
+bind tmu_cube_address tmu_stream_check #(
+  .W($bits({in_x_i, in_y_i, in_z_i, in_face_log2_i}))
+) u_in_check (
+  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
+  .data_i({in_x_i, in_y_i, in_z_i, in_face_log2_i})
+);
+bind tmu_cube_address tmu_stream_check #(
+  .W($bits({out_face_o, out_u_o, out_v_o}))
+) u_out_check (
+  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
+  .data_i({out_face_o, out_u_o, out_v_o})
+);
+`endif

@@ -71,23 +71,24 @@ module tmu_normal_encoder #(
     $error("tmu_normal_encoder: built for 16-bit components");
   end
 
-  // ---- Pipeline control -------------------------------------------------------------------
+  // ---- Pipeline control: tmu_pipe_ctrl ------------------------------------------------------
 
-  // valid_q[j]: stage j holds a normal; load[j]: stage j takes stage j - 1's at this edge.
-  logic [NumStages:1] valid_q, load;
-  logic               advance;
+  // valid[j]: stage j holds a normal; load[j]: stage j takes stage j - 1's at this edge.
+  logic [NumStages:1] valid, load;
 
-  assign advance    = !valid_q[NumStages] || out_ready_i;
-  assign in_ready_o = advance;
-  assign load       = advance ? {valid_q[NumStages-1:1], in_valid_i} : '0;
-
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      valid_q <= '0;
-    end else if (advance) begin
-      valid_q <= {valid_q[NumStages-1:1], in_valid_i};
-    end
-  end
+  tmu_pipe_ctrl #(.NumStages(NumStages)) u_pipe_ctrl (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .in_valid_i  (in_valid_i),
+    .in_ready_o  (in_ready_o),
+    .out_valid_o (out_valid_o),
+    .out_ready_i (out_ready_i),
+    .valid_o     (valid),
+    .load_o      (load)
+  );
+  // The stages load on load[j]; nothing here reads their valids.
+  logic unused_valid;
+  assign unused_valid = ^valid;
 
   // Signs (x, y, z at bits 0, 1, 2), from S3 on with the swaps (phi, theta at bits 3, 4),
   // travel to S8.
@@ -182,7 +183,6 @@ module tmu_normal_encoder #(
   logic [A-1:0] s8_phi_q;
   logic [A-2:0] s8_theta_q;
 
-  assign out_valid_o = valid_q[NumStages];
   assign out_phi_o   = s8_phi_q;
   assign out_theta_o = s8_theta_q;
 
@@ -221,12 +221,26 @@ module tmu_normal_encoder #(
   // Assertions run under Verilator (--assert); Yosys 0.23 cannot parse concurrent assertions
   // and defines SYNTHESIS.
 `ifndef SYNTHESIS
-  // A held output must not change until it is taken.
-  a_output_stable: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (out_valid_o && !out_ready_i) |=> $stable({out_phi_o, out_theta_o}));
   // The dividers see the smaller square over the larger.
   a_ratio_at_most_one: assert property (@(posedge clk_i) disable iff (!rst_ni)
       load[4] |-> (s3_num_phi_q <= s3_den_phi_q && s3_num_theta_q <= s3_den_theta_q));
 `endif
 
 endmodule
+
+// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
+// simulation only: Yosys reads no bind).
+`ifndef SYNTHESIS
+bind tmu_normal_encoder tmu_stream_check #(
+  .W($bits({in_x_i, in_y_i, in_z_i}))
+) u_in_check (
+  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
+  .data_i({in_x_i, in_y_i, in_z_i})
+);
+bind tmu_normal_encoder tmu_stream_check #(
+  .W($bits({out_phi_o, out_theta_o}))
+) u_out_check (
+  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
+  .data_i({out_phi_o, out_theta_o})
+);
+`endif

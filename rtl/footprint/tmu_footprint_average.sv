@@ -120,6 +120,8 @@ module tmu_footprint_average #(
   end
 
 `ifndef SYNTHESIS
+  // The in and out channels' ready/valid rules are checked at the trilinear unit's and the
+  // footprint unit's out ports (their u_out_check: tmu_stream_check).
   // Colours come only for fragments the marcher started.
   property p_colour_expected;
     @(posedge clk_i) disable iff (!rst_ni) in_valid_i |-> count_q != '0;
@@ -131,13 +133,6 @@ module tmu_footprint_average #(
     @(posedge clk_i) disable iff (!rst_ni) frag_push_i |-> !frag_full_o;
   endproperty
   a_no_overflow: assert property (p_no_overflow);
-
-  // A held output must not change until it is taken.
-  property p_output_stable;
-    @(posedge clk_i) disable iff (!rst_ni)
-      (out_valid_o && !out_ready_i) |=> (out_valid_o && $stable(out_rgba_o));
-  endproperty
-  a_output_stable: assert property (p_output_stable);
 `endif
 
 endmodule

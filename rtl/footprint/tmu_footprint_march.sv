@@ -142,15 +142,8 @@ module tmu_footprint_march (
   end
 
 `ifndef SYNTHESIS
-  // A probe is held, unchanged, until the trilinear unit takes it.
-  property p_probe_stable;
-    @(posedge clk_i) disable iff (!rst_ni)
-      (probe_valid_o && !probe_ready_i) |=>
-        (probe_valid_o && $stable(probe_u_o) && $stable(probe_v_o) &&
-         $stable(probe_lambda_o) && $stable(probe_shade_o));
-  endproperty
-  a_probe_stable: assert property (p_probe_stable);
-
+  // The plan and probe channels' ready/valid rules are checked at the setup's plan port and
+  // the trilinear unit's req port (their u_plan_check, u_req_check: tmu_stream_check).
   // k is 0..4.
   property p_k_in_range;
     @(posedge clk_i) disable iff (!rst_ni) load |-> plan_log2_n_i <= 3'(KMax);

@@ -124,23 +124,24 @@ module tmu_noise #(
     lerp    = a + step;
   endfunction
 
-  // ---- Pipeline control -------------------------------------------------------------------
+  // ---- Pipeline control: tmu_pipe_ctrl ------------------------------------------------------
 
-  // valid_q[j]: stage j holds a sample; load[j]: stage j takes stage j - 1's at this edge.
-  logic [NumStages:1] valid_q, load;
-  logic               advance;
+  // valid[j]: stage j holds a sample; load[j]: stage j takes stage j - 1's at this edge.
+  logic [NumStages:1] valid, load;
 
-  assign advance    = !valid_q[NumStages] || out_ready_i;
-  assign in_ready_o = advance;
-  assign load       = advance ? {valid_q[NumStages-1:1], in_valid_i} : '0;
-
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      valid_q <= '0;
-    end else if (advance) begin
-      valid_q <= {valid_q[NumStages-1:1], in_valid_i};
-    end
-  end
+  tmu_pipe_ctrl #(.NumStages(NumStages)) u_pipe_ctrl (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .in_valid_i  (in_valid_i),
+    .in_ready_o  (in_ready_o),
+    .out_valid_o (out_valid_o),
+    .out_ready_i (out_ready_i),
+    .valid_o     (valid),
+    .load_o      (load)
+  );
+  // The stages load on load[j]; of the valids only an assertion reads one (valid[1]).
+  logic unused_valid;
+  assign unused_valid = ^valid;
 
   // The fade weights travel with the sample until their lerp: u to S4, v to S5, w to S6.
   logic [FW-1:0] s1_cu_q, s2_cu_q, s3_cu_q, s4_cu_q;
@@ -187,8 +188,7 @@ module tmu_noise #(
   logic [2*PW-1:0] s6_y_q;  // along v, index dw
   logic [PW-1:0] s7_p_q;
 
-  assign out_valid_o = valid_q[NumStages];
-  assign out_p_o     = s7_p_q;
+  assign out_p_o = s7_p_q;
 
   // ---- Data registers: only read while their stage is valid, no reset --------------------------
 
@@ -268,12 +268,26 @@ module tmu_noise #(
   // Assertions run under Verilator (--assert); Yosys 0.23 cannot parse concurrent assertions
   // and defines SYNTHESIS.
 `ifndef SYNTHESIS
-  // A held output must not change until it is taken.
-  a_output_stable: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (out_valid_o && !out_ready_i) |=> $stable(out_p_o));
   // The fade weights are in 0 .. 2^B (UQ1.B).
   a_fade_range: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      valid_q[1] |-> (s1_cu_q <= FW'(1 << B) && s1_cv_q <= FW'(1 << B) && s1_cw_q <= FW'(1 << B)));
+      valid[1] |-> (s1_cu_q <= FW'(1 << B) && s1_cv_q <= FW'(1 << B) && s1_cw_q <= FW'(1 << B)));
 `endif
 
 endmodule
+
+// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
+// simulation only: Yosys reads no bind).
+`ifndef SYNTHESIS
+bind tmu_noise tmu_stream_check #(
+  .W($bits({in_u_i, in_v_i, in_w_i}))
+) u_in_check (
+  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
+  .data_i({in_u_i, in_v_i, in_w_i})
+);
+bind tmu_noise tmu_stream_check #(
+  .W($bits(out_p_o))
+) u_out_check (
+  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
+  .data_i(out_p_o)
+);
+`endif

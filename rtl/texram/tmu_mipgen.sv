@@ -304,10 +304,6 @@ module tmu_mipgen #(
   // Assertions run under Verilator (--assert); Yosys 0.23 cannot parse concurrent assertions
   // and defines SYNTHESIS.
 `ifndef SYNTHESIS
-  // A stalled write holds still until it is taken.
-  a_write_stable: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (wr_valid_o && !wr_ready_i) |=> wr_valid_o &&
-      $stable({wr_level_o, wr_x_o, wr_y_o, wr_value_o, wr_bank_o, wr_addr_o}));
   // The format fits the FIFOs, and no texel climbs above the top level.
   a_cfg_in_range: assert property (@(posedge clk_i) disable iff (!rst_ni)
       32'(cfg_log2_w_i) <= MaxLog2 && 32'(cfg_log2_h_i) <= MaxLog2);
@@ -316,3 +312,20 @@ module tmu_mipgen #(
 `endif
 
 endmodule
+
+// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
+// simulation only: Yosys reads no bind).
+`ifndef SYNTHESIS
+bind tmu_mipgen tmu_stream_check #(
+  .W($bits({in_texel_i, in_above_i}))
+) u_in_check (
+  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
+  .data_i({in_texel_i, in_above_i})
+);
+bind tmu_mipgen tmu_stream_check #(
+  .W($bits({wr_level_o, wr_x_o, wr_y_o, wr_value_o, wr_bank_o, wr_addr_o}))
+) u_wr_check (
+  .clk_i, .rst_ni, .valid_i(wr_valid_o), .ready_i(wr_ready_i),
+  .data_i({wr_level_o, wr_x_o, wr_y_o, wr_value_o, wr_bank_o, wr_addr_o})
+);
+`endif

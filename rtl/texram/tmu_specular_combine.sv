@@ -48,23 +48,24 @@ module tmu_specular_combine (
     $error("tmu_specular_combine: built for RGBA8888");
   end
 
-  // ---- Pipeline control -------------------------------------------------------------------
+  // ---- Pipeline control: tmu_pipe_ctrl ------------------------------------------------------
 
-  // valid_q[j]: stage j holds a colour; load[j]: stage j takes stage j - 1's at this edge.
-  logic [NumStages:1] valid_q, load;
-  logic               advance;
+  // valid[j]: stage j holds a colour; load[j]: stage j takes stage j - 1's at this edge.
+  logic [NumStages:1] valid, load;
 
-  assign advance    = !valid_q[NumStages] || out_ready_i;
-  assign in_ready_o = advance;
-  assign load       = advance ? {valid_q[NumStages-1:1], in_valid_i} : '0;
-
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      valid_q <= '0;
-    end else if (advance) begin
-      valid_q <= {valid_q[NumStages-1:1], in_valid_i};
-    end
-  end
+  tmu_pipe_ctrl #(.NumStages(NumStages)) u_pipe_ctrl (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .in_valid_i  (in_valid_i),
+    .in_ready_o  (in_ready_o),
+    .out_valid_o (out_valid_o),
+    .out_ready_i (out_ready_i),
+    .valid_o     (valid),
+    .load_o      (load)
+  );
+  // The stages load on load[j]; of the valids only an assertion reads one (valid[1]).
+  logic unused_valid;
+  assign unused_valid = ^valid;
 
   // ---- -> S1: the products ------------------------------------------------------------------
 
@@ -100,13 +101,12 @@ module tmu_specular_combine (
 `ifndef SYNTHESIS
     // Reflections only add light: no channel of C is below D's.
     a_no_darkening: assert property (@(posedge clk_i) disable iff (!rst_ni)
-        valid_q[1] |-> colour[ch*ChW +: ChW] >= s1_diffuse_q[ch*ChW +: ChW]);
+        valid[1] |-> colour[ch*ChW +: ChW] >= s1_diffuse_q[ch*ChW +: ChW]);
 `endif
   end
 
   tmu_pkg::rgba8888_t s2_colour_q;
 
-  assign out_valid_o  = valid_q[NumStages];
   assign out_colour_o = s2_colour_q;
 
   // ---- Data registers: only read while their stage is valid, no reset --------------------------
@@ -120,12 +120,21 @@ module tmu_specular_combine (
     if (load[2]) s2_colour_q <= colour;
   end
 
-  // Assertions run under Verilator (--assert); Yosys 0.23 cannot parse concurrent assertions
-  // and defines SYNTHESIS.
-`ifndef SYNTHESIS
-  // A held output must not change until it is taken.
-  a_output_stable: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (out_valid_o && !out_ready_i) |=> $stable(out_colour_o));
-`endif
-
 endmodule
+
+// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
+// simulation only: Yosys reads no bind).
+`ifndef SYNTHESIS
+bind tmu_specular_combine tmu_stream_check #(
+  .W($bits({in_diffuse_i, in_specular_i, in_reflectance_i}))
+) u_in_check (
+  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
+  .data_i({in_diffuse_i, in_specular_i, in_reflectance_i})
+);
+bind tmu_specular_combine tmu_stream_check #(
+  .W($bits(out_colour_o))
+) u_out_check (
+  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
+  .data_i(out_colour_o)
+);
+`endif

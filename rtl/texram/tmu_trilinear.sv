@@ -613,21 +613,6 @@ module tmu_trilinear #(
   // They run under Verilator (--assert); Yosys 0.23 cannot parse concurrent assertions and
   // defines SYNTHESIS.
 `ifndef SYNTHESIS
-  // A held output must not change until it is taken.
-  property p_output_stable;
-    @(posedge clk_i) disable iff (!rst_ni)
-      (out_valid_o && !out_ready_i) |=> (out_valid_o && $stable(out_rgba_o));
-  endproperty
-  a_output_stable: assert property (p_output_stable);
-
-  // A memory request is held, with its banks and addresses, until the memory takes it.
-  property p_mem_req_stable;
-    @(posedge clk_i) disable iff (!rst_ni)
-      (mem_req_valid_o && !mem_req_ready_i) |=>
-        (mem_req_valid_o && $stable(mem_req_en_o) && $stable(mem_req_addr_o));
-  endproperty
-  a_mem_req_stable: assert property (p_mem_req_stable);
-
   // Every access reads at least one bank.
   property p_mem_req_reads;
     @(posedge clk_i) disable iff (!rst_ni) mem_req_valid_o |-> mem_req_en_o != '0;
@@ -684,3 +669,32 @@ module tmu_trilinear #(
 `endif
 
 endmodule
+
+// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
+// simulation only: Yosys reads no bind).
+`ifndef SYNTHESIS
+bind tmu_trilinear tmu_stream_check #(
+  .W($bits({clut_addr_i, clut_rgba_i}))
+) u_clut_check (
+  .clk_i, .rst_ni, .valid_i(clut_valid_i), .ready_i(clut_ready_o),
+  .data_i({clut_addr_i, clut_rgba_i})
+);
+bind tmu_trilinear tmu_stream_check #(
+  .W($bits({req_u_i, req_v_i, req_lambda_i, req_shade_i}))
+) u_req_check (
+  .clk_i, .rst_ni, .valid_i(req_valid_i), .ready_i(req_ready_o),
+  .data_i({req_u_i, req_v_i, req_lambda_i, req_shade_i})
+);
+bind tmu_trilinear tmu_stream_check #(
+  .W($bits({mem_req_en_o, mem_req_addr_o}))
+) u_mem_req_check (
+  .clk_i, .rst_ni, .valid_i(mem_req_valid_o), .ready_i(mem_req_ready_i),
+  .data_i({mem_req_en_o, mem_req_addr_o})
+);
+bind tmu_trilinear tmu_stream_check #(
+  .W($bits(out_rgba_o))
+) u_out_check (
+  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
+  .data_i(out_rgba_o)
+);
+`endif

@@ -135,24 +135,19 @@ module tmu_trilinear_blend #(
 
   // ---- O: eq. 5 ---------------------------------------------------------------------------
 
-  // round(t m / 255) exactly: (x + (x >> 8)) >> 8 with x = t m + 128 (texram::mul255).
-  function automatic tmu_pkg::channel_t mul255(tmu_pkg::channel_t t, tmu_pkg::channel_t m);
-    logic [2*ChW-1:0] x;
-    x = (2 * ChW)'(t) * (2 * ChW)'(m) + (2 * ChW)'(128);
-    mul255 = ChW'((x + (x >> ChW)) >> ChW);
-  endfunction
-
-  tmu_pkg::rgba8888_t modulator;
+  tmu_pkg::rgba8888_t modulator, modulated;
   assign modulator = combine_constant_i ? constant_rgba_i : z_shade_q;
 
-  always_comb begin
-    o_rgba_d = z_rgba_q;
-    if (combine_constant_i || combine_shade_i) begin
-      for (int ch = 0; ch < Chs; ch++) begin
-        o_rgba_d[ch*ChW +: ChW] = mul255(z_rgba_q[ch*ChW +: ChW], modulator[ch*ChW +: ChW]);
-      end
-    end
+  // round(T M / 255) per channel, exactly as texram::mul255.
+  for (genvar ch = 0; ch < Chs; ch++) begin : gen_o_channel
+    tmu_mul255 u_mul255 (
+      .t_i (z_rgba_q[ch*ChW +: ChW]),
+      .m_i (modulator[ch*ChW +: ChW]),
+      .p_o (modulated[ch*ChW +: ChW])
+    );
   end
+
+  assign o_rgba_d = combine_constant_i || combine_shade_i ? modulated : z_rgba_q;
 
   // ---- Flops ------------------------------------------------------------------------------
 

@@ -6,12 +6,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -88,18 +90,40 @@ fs::path cache_dir() {
 
 }  // namespace
 
+// A row's items are .sv files or earlier rows' tops, which stand for their sources; each file
+// comes once, where it first appears (the manifest's header; rtl/CMakeLists.txt and
+// scripts/manifest_sources.sh resolve it the same way).
 std::vector<std::string> manifest_sources(const std::string& top) {
   const fs::path rtl = fs::path(TMU_SOURCE_DIR) / "rtl";
+  std::map<std::string, std::vector<std::string>> rows;  // every row, resolved
   std::istringstream manifest(read_file(rtl / "manifest.txt"));
   for (std::string line; std::getline(manifest, line);) {
     std::istringstream fields(line);
     std::string name;
-    if (!(fields >> name) || name != top) continue;
-    std::vector<std::string> sources = {"tmu_pkg.sv"};
-    for (std::string s; fields >> s;) sources.push_back(s);
-    return sources;
+    if (!(fields >> name) || name.starts_with("#")) continue;
+    if (rows.contains(name))
+      throw std::runtime_error("rtl/manifest.txt: " + name + " has two rows");
+    std::vector<std::string> sources;
+    const auto add = [&sources](const std::string& file) {
+      if (std::find(sources.begin(), sources.end(), file) == sources.end()) sources.push_back(file);
+    };
+    for (std::string item; fields >> item;) {
+      if (item.ends_with(".sv")) {
+        add(item);
+      } else if (const auto row = rows.find(item); row != rows.end()) {
+        for (const std::string& file : row->second) add(file);
+      } else {
+        throw std::runtime_error("rtl/manifest.txt: " + name + ": " + item +
+                                 " is neither a .sv file nor the top of an earlier row");
+      }
+    }
+    rows.emplace(name, std::move(sources));
   }
-  throw std::runtime_error(top + " is not a top of rtl/manifest.txt");
+  const auto row = rows.find(top);
+  if (row == rows.end()) throw std::runtime_error(top + " is not a top of rtl/manifest.txt");
+  std::vector<std::string> sources = {"tmu_pkg.sv"};
+  sources.insert(sources.end(), row->second.begin(), row->second.end());
+  return sources;
 }
 
 std::string icarus_compat_source(const std::string& file, const std::string& text) {

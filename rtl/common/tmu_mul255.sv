@@ -1,6 +1,6 @@
 /// round(t m / 255) for two 8-bit channels, exactly as golden texram::mul255
-/// (golden/texram/trilinear.hpp): x = t m + 128, then (x + (x >> 8)) >> 8. Combinational; the
-/// same arithmetic as the mul255 function of tmu_trilinear_blend's eq. 5 stage.
+/// (golden/texram/trilinear.hpp): x = t m + 128, then (x + (x >> 8)) >> 8. Combinational;
+/// the RTL's one copy of it (tmu_trilinear_blend's eq. 5 stage, tmu_specular_combine).
 ///
 /// 16 bits suffice: x <= 255 * 255 + 128 = 65153 and x + (x >> 8) <= 65407.
 ///
