@@ -172,6 +172,8 @@ tmu_mutant(noise hash FILE perlin/tmu_noise.sv
 tmu_mutant(noise fade FILE perlin/tmu_noise.sv
   FROM "FW'((num + (64'(1) << (3 * S - 1))) >> (3 * S))" TO "FW'(num >> (3 * S))"
   WHY "the fade table truncates instead of rounding half up")
+# The pipelines built on tmu_pipe_ctrl (noise, specular_combine, cube_address, normal_encoder)
+# keep their valids there: their x-leak mutants remove its reset, in their own model's copy.
 tmu_mutant(noise unreset FILE common/tmu_pipe_ctrl.sv EXPECT x-leak
   FROM "      valid_q <= '0;\n" TO ""
   WHY "the stage valids keep their initial values through reset (random samples leave)")
@@ -337,7 +339,7 @@ tmu_mutant(specular_combine wrap FILE texram/tmu_specular_combine.sv
 tmu_mutant(specular_combine alpha FILE texram/tmu_specular_combine.sv
   FROM "s1_alpha_q   <= in_diffuse_i" TO "s1_alpha_q   <= in_specular_i"
   WHY "C's alpha is E's instead of D's")
-tmu_mutant(specular_combine unreset FILE texram/tmu_specular_combine.sv EXPECT x-leak
+tmu_mutant(specular_combine unreset FILE common/tmu_pipe_ctrl.sv EXPECT x-leak
   FROM "      valid_q <= '0;\n" TO ""
   WHY "the two stage valids keep their initial values through reset (random colours leave)")
 
@@ -349,7 +351,7 @@ tmu_mutant(cube_address tie FILE deflect/tmu_cube_address.sv
 tmu_mutant(cube_address sign FILE deflect/tmu_cube_address.sv
   FROM "{!s1_sx_q, s1_a_q, !s1_sy_q, s1_b_q};  // -Z" TO "{s1_sx_q, s1_a_q, !s1_sy_q, s1_b_q};  // -Z"
   WHY "the -Z face's sc = -x loses its sign (u mirrored on that face only)")
-tmu_mutant(cube_address unreset FILE deflect/tmu_cube_address.sv EXPECT x-leak
+tmu_mutant(cube_address unreset FILE common/tmu_pipe_ctrl.sv EXPECT x-leak
   FROM "      valid_q <= '0;\n" TO ""
   WHY "the seven stage valids keep their initial values through reset (random addresses leave)")
 
@@ -363,7 +365,7 @@ tmu_mutant(normal_encoder nr FILE deflect/tmu_normal_divider.sv
 tmu_mutant(normal_encoder pole FILE deflect/tmu_normal_encoder.sv
   FROM "k_theta >= Q ?" TO "1'b0 ?"
   WHY "theta does not saturate at the poles (k = Q wraps to magnitude 0)")
-tmu_mutant(normal_encoder unreset FILE deflect/tmu_normal_encoder.sv EXPECT x-leak
+tmu_mutant(normal_encoder unreset FILE common/tmu_pipe_ctrl.sv EXPECT x-leak
   FROM "      valid_q <= '0;\n" TO ""
   WHY "the eight stage valids keep their initial values through reset (random normals leave)")
 tmu_mutant(normal_encoder entry_round VARIANT e1m7 FILE deflect/tmu_normal_angle_lut.sv
