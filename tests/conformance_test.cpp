@@ -29,6 +29,12 @@
 #include "texsim/cosim_options.hpp"
 
 namespace tmu::tb {
+
+// How GoogleTest prints a case (ctest's test names end in it): the variant, not its bytes.
+void PrintTo(const BlockVariant& v, std::ostream* os) {
+  *os << v.block << (v.key.empty() ? "" : "/" + v.key);
+}
+
 namespace {
 
 std::string case_name(const std::string& block, const std::string& key) {
@@ -173,6 +179,10 @@ std::vector<MutantCase> mutant_cases() {
 #undef TMU_MUTANT_CASE
 }
 
+void PrintTo(const MutantCase& m, std::ostream* os) {
+  *os << m.block << (m.key.empty() ? "" : "/" + m.key) << " mutant " << m.name;
+}
+
 class Mutant : public ::testing::TestWithParam<MutantCase> {};
 
 // The block's cosim (directed and random items under stalls) on the mutated model.
@@ -197,6 +207,9 @@ TEST_P(Mutant, IsCaught) {
   for (const char* key : {"MISMATCH rtl", "x-check"}) {
     const size_t at = text.find(key);
     if (at != std::string::npos) std::cout << m.why << ":\n" << text.substr(at, 400) << "\n";
+  }
+  if (const auto rtl = r.runs.find("rtl"); rtl != r.runs.end() && !rtl->second.error.empty()) {
+    std::cout << m.why << ":\n  rtl error: " << rtl->second.error.substr(0, 400) << "\n";
   }
 }
 
