@@ -9,7 +9,8 @@
 # --long (or TMU_LONG=1) also runs the tests labelled `long`, which the default run leaves
 #   out: the full Yosys synthesis of every block (rtl_synth_figures_<top>, docs/synth.md).
 #   A -LE of your own is added to that exclusion.
-# TMU_SKIP_SANITIZE=1 leaves the sanitizer subset out (a quick local run).
+# TMU_SKIP_SANITIZE=1 leaves the sanitizer subset out (a quick local run); TMU_TEST_TIMEOUT sets
+# the seconds after which a test fails (default 600, with --long 3600).
 # ctest writes JUnit XML to $build/ctest-junit.xml (TMU_JUNIT overrides the path); the ten
 # slowest tests are printed from it at the end (scripts/slowest_tests.py), with the time of
 # each phase. Times are a report: nothing here fails on them.
@@ -31,6 +32,10 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 [[ "$long" != 1 ]] && exclude=${exclude:+($exclude)|}long
+# A test that hangs fails after this many seconds instead of eating CI's budget (the slowest
+# test takes about 35 s on two cores; the long set's full synthesis of tmu_material ~10 min).
+timeout=${TMU_TEST_TIMEOUT:-600}
+[[ "$long" == 1 ]] && timeout=${TMU_TEST_TIMEOUT:-3600}
 select=()
 [[ -n "$exclude" ]] && select=(-LE "$exclude")
 
@@ -40,7 +45,7 @@ build_s=$((SECONDS - start))
 
 status=0
 ctest --test-dir "$build" -j "$(nproc)" --output-on-failure --output-junit "$junit" \
-  "${select[@]}" "${ctest_args[@]}" || status=$?
+  --timeout "$timeout" "${select[@]}" "${ctest_args[@]}" || status=$?
 ctest_s=$((SECONDS - start - build_s))
 "$root/scripts/slowest_tests.py" "$junit" || true  # a report: a missing file is not the verdict
 
