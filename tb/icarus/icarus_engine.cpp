@@ -192,15 +192,13 @@ std::string icarus_compile(const IcarusModel& model, double* compile_seconds) {
                              ", not a source of " + model.top);
   }
   files.emplace_back("tb/stream_tb.svh", read_file(tb / "stream_tb.svh"));
-  files.emplace_back("tb/" + model.testbench + ".sv",
-                     model.text.empty() ? read_file(tb / (model.testbench + ".sv")) : model.text);
+  files.emplace_back("tb/" + model.testbench + ".sv", model.text);
 
   uint64_t h = kFnv1aBasis;
   h = fnv1a(h, kCompileFlavour);
   h = fnv1a(h, iverilog);
   h = fnv1a(h, model.testbench);
   h = fnv1a(h, model.top);
-  for (const auto& [name, value] : model.params) h = fnv1a(fnv1a(h, name), value);
   for (const auto& [path, text] : files) h = fnv1a(fnv1a(h, path), text);
   const fs::path cache = cache_dir();
   const fs::path dir = cache / fmt::format("{}-{:016x}", model.testbench, h);
@@ -216,8 +214,6 @@ std::string icarus_compile(const IcarusModel& model, double* compile_seconds) {
                                    "-I",          (tmp / "tb").string(),
                                    "-o",          (tmp / "model.vvp").string(),
                                    "-s",          model.testbench};
-  for (const auto& [name, value] : model.params)
-    argv.push_back("-P" + model.testbench + "." + name + "=" + value);
   for (const auto& [path, text] : files) {
     write_text(tmp / path, text);
     if (!path.ends_with(".svh")) argv.push_back((tmp / path).string());

@@ -34,14 +34,12 @@ struct IcarusMutation {
 };
 
 struct IcarusModel {
-  using Params = std::vector<std::pair<std::string, std::string>>;
-  IcarusModel(std::string testbench_, std::string top_, Params params_ = {})
-      : testbench(std::move(testbench_)), top(std::move(top_)), params(std::move(params_)) {}
+  IcarusModel(std::string testbench_, std::string top_)
+      : testbench(std::move(testbench_)), top(std::move(top_)) {}
 
-  std::string testbench;  // the testbench module: tb/icarus/<testbench>.sv, or `text`
+  std::string testbench;  // the testbench module's name
   std::string top;        // the DUT's module: its sources are its line of rtl/manifest.txt
-  Params params;          // testbench parameters (iverilog -P)
-  std::string text;       // the testbench's text when it is generated (tb/icarus/testbench.hpp)
+  std::string text;       // the testbench, generated from the ports (tb/icarus/testbench.hpp)
   std::optional<IcarusMutation> mutation;
 };
 

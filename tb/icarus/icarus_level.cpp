@@ -12,7 +12,7 @@ bool icarus_drives(const BlockPorts& p) {
 }
 
 DescribedBlock::EngineFactory icarus_level(const std::string& top, const std::string& params) {
-  IcarusModel::Params list;
+  std::vector<std::pair<std::string, std::string>> list;  // NAME, VALUE
   std::istringstream words(params);
   for (std::string w; words >> w;) {
     const size_t eq = w.find('=');
