@@ -2,16 +2,8 @@
 # texsim from the user's side: help on every command, clear errors with a non-zero exit for
 # bad files and arguments, and no output file left behind (or clobbered) by a failed run.
 # Usage: tests/cli_test.sh PATH/TO/texsim
-set -uo pipefail
-texsim=$(realpath "$1")
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/check_lib.sh" "$1"
 cd "$work"
-failures=0
-
-pass() { echo "ok   $1"; }
-fail() { echo "FAIL $1"; failures=$((failures + 1)); }
 
 # expect NAME EXIT_CODE PATTERN -- command...: the exit code and a pattern in stdout+stderr.
 expect() {
@@ -157,5 +149,4 @@ idiff -q whole.png whole/render.png >/dev/null && pass "merged bands equal the w
 ! idiff -q whole.png bands/render.tile-0-of-3.png >/dev/null 2>&1 && pass "idiff tells different images apart" \
   || fail "idiff cannot fail"
 
-echo "$failures failure(s)"
-exit $((failures > 0))
+finish

@@ -44,6 +44,10 @@ TEST_P(PortsTest, DescriptionMatchesTheRtl) {
   for (const std::string& s : sources) {
     cmd += fmt::format(" {}", (fs::path(TMU_SOURCE_DIR) / "rtl" / s).string());
   }
+  // and the binds of the top's description, which name its ports too.
+  if (const fs::path binds = fs::path(TMU_BINDS_DIR) / (v.top + "_binds.sv"); fs::exists(binds)) {
+    cmd += " " + binds.string();
+  }
   cmd += fmt::format(" {} > {} 2>&1", check.string(), (dir / "lint.log").string());
   const int rc = std::system(cmd.c_str());
   std::ifstream log(dir / "lint.log");

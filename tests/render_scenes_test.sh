@@ -1,12 +1,7 @@
 #!/usr/bin/env bash
 # Every bundled scene renders on every engine: ideal, golden, and hls and rtl each checked
 # bit for bit against golden. Usage: tests/render_scenes_test.sh PATH/TO/texsim
-set -uo pipefail
-texsim=$(realpath "$1")
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
+source "$(dirname "${BASH_SOURCE[0]}")/check_lib.sh" "$1"
 for scene in "$root"/scenes/*.json; do
   name=$(basename "$scene" .json)
   for run in "ideal" "golden" "hls --check golden" "rtl --check golden"; do
@@ -20,5 +15,4 @@ for scene in "$root"/scenes/*.json; do
     fi
   done
 done
-echo "$failures failure(s)"
-exit $((failures > 0))
+finish

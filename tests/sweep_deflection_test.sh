@@ -7,13 +7,7 @@
 # same scene (two independent paths to one figure), and a scene without a deflection chain
 # is a clear error. Usage:
 # tests/sweep_deflection_test.sh PATH/TO/texsim
-set -uo pipefail
-texsim=$(realpath "$1")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-pass() { echo "ok   $1"; }
-fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/check_lib.sh" "$1"
 
 out=$("$texsim" sweep deflection --no-synth --settings "8,4,5,10;9,4,5,10;9,1,7,10" \
   --out "$work/out" --markdown "$work/table.md" 2>&1)
@@ -22,13 +16,6 @@ echo "$out"
 [[ $code -eq 0 ]] && pass "exit 0" || fail "exit $code"
 [[ -s "$work/out/deflection_a9e4m5w10_reflect.png" ]] && pass "pictures written" || fail "no pictures"
 
-column() {  # the cell of setting $1 under header $2 in the Markdown table
-  awk -F'|' -v v="$1" -v h="$2" '
-    function trim(x) { gsub(/^ +| +$/, "", x); return x }
-    NR == 1 { for (i = 2; i < NF; ++i) if (trim($i) == h) c = i; next }
-    c && trim($2) == v { print trim($c) }' "$work/table.md"
-}
-less() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a < b) }'; }
 
 for h in "N max deg" "R mean deg"; do
   coarse=$(column "8,4,5,10" "$h")
@@ -63,5 +50,4 @@ code=$?
 [[ $code -eq 2 ]] && grep -q "materials" "$work/plain.txt" &&
   pass "scene without a chain: exit 2, names materials" || fail "plain scene: exit $code: $(cat "$work/plain.txt")"
 
-echo "$failures failure(s)"
-[[ $failures -eq 0 ]]
+finish

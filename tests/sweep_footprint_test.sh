@@ -2,26 +2,13 @@
 # `texsim sweep footprint --quick`: it runs, its table has every variant, footprint assembly at
 # N max 16 beats isotropic trilinear against the reference, and the probes per pixel grow with
 # N max. Wall times are not asserted. Usage: tests/sweep_footprint_test.sh PATH/TO/texsim
-set -uo pipefail
-texsim=$(realpath "$1")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-pass() { echo "ok   $1"; }
-fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/check_lib.sh" "$1"
 
 out=$("$texsim" sweep footprint --quick --out "$work/out" --markdown "$work/table.md" 2>&1)
 code=$?
 echo "$out"
 [[ $code -eq 0 ]] && pass "exit 0" || fail "exit $code"
 
-# A cell of the Markdown table: column VARIANT HEADER (the header as the table names it).
-column() {
-  awk -F'|' -v v="$1" -v h="$2" '
-    function trim(x) { gsub(/^ +| +$/, "", x); return x }
-    NR == 1 { for (i = 2; i < NF; ++i) if (trim($i) == h) c = i; next }
-    c && trim($2) == v { print trim($c) }' "$work/table.md"
-}
 variants=("trilinear (isotropic)" "footprint N<=2" "footprint N<=4" "footprint N<=8" "footprint N<=16"
   "ideal ellipse axis N<=16" "ideal longer side N<=16" "OIIO aniso 16")
 for v in "${variants[@]}"; do
@@ -52,5 +39,4 @@ for f in footprint_sweep.png footprint_sweep_error.png footprint_reference.png \
   [[ -s "$work/out/$f" ]] && pass "wrote $f" || fail "no $f"
 done
 
-echo "$failures failure(s)"
-exit $((failures > 0))
+finish

@@ -3,14 +3,7 @@
 # has the smaller noise error (what the widths buy), and a malformed setting or a scene
 # without procedural materials is a clear error with exit 2. Usage:
 # tests/sweep_perlin_test.sh PATH/TO/texsim
-set -uo pipefail
-texsim=$(realpath "$1")
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-pass() { echo "ok   $1"; }
-fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/check_lib.sh" "$1"
 
 out=$("$texsim" sweep perlin --no-synth --settings "8,8,8,4;4,4,4,0" --requests 20000 \
   --out "$work/out" --markdown "$work/table.md" 2>&1)
@@ -21,13 +14,6 @@ echo "$out"
   pass "pictures written" || fail "no pictures"
 [[ -s "$work/table_configs.md" ]] && pass "configurations table written" || fail "no configurations table"
 
-column() {  # the cell of setting $1 under header $2 in the Markdown table
-  awk -F'|' -v v="$1" -v h="$2" '
-    function trim(x) { gsub(/^ +| +$/, "", x); return x }
-    NR == 1 { for (i = 2; i < NF; ++i) if (trim($i) == h) c = i; next }
-    c && trim($2) == v { print trim($c) }' "$work/table.md"
-}
-less() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a < b) }'; }
 for h in "P max" "sums max"; do
   wide=$(column "8,8,8,4" "$h")
   narrow=$(column "4,4,4,0" "$h")
@@ -47,5 +33,4 @@ code=$?
 [[ $code -eq 2 ]] && grep -q "no procedural material" "$work/plain.txt" &&
   pass "scene without procedural materials: exit 2" || fail "plain: exit $code: $(cat "$work/plain.txt")"
 
-echo "$failures failure(s)"
-[[ $failures -eq 0 ]]
+finish

@@ -32,14 +32,11 @@ ImageRgb8 read_image(const std::string& path) {
   return img;
 }
 
-void write_image(const std::string& path, const ImageRgb8& image) {
+void write_image_file_atomically(const std::string& path, const ImageFileSpec& spec,
+                                 const void* pixels) {
   write_atomically(path, [&](const std::string& tmp) {
-    ImageFileSpec spec;
-    spec.width = image.width;
-    spec.height = image.height;
-    spec.channels = 3;
     std::string why;
-    switch (write_image_file(path, tmp, spec, image.pixels.data(), &why)) {
+    switch (write_image_file(path, tmp, spec, pixels, &why)) {
       case ImageWrite::kOk:
         return;
       case ImageWrite::kNoWriter:
@@ -48,6 +45,14 @@ void write_image(const std::string& path, const ImageRgb8& image) {
         throw InputError(path, "", "cannot write image: " + why);
     }
   });
+}
+
+void write_image(const std::string& path, const ImageRgb8& image) {
+  ImageFileSpec spec;
+  spec.width = image.width;
+  spec.height = image.height;
+  spec.channels = 3;
+  write_image_file_atomically(path, spec, image.pixels.data());
 }
 
 double psnr(const ImageRgb8& a, const ImageRgb8& b) {

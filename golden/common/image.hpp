@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "common/image_file.hpp"
+
 namespace tmu {
 
 struct Rgb8 {
@@ -36,6 +38,11 @@ ImageRgb8 read_image(const std::string& path);
 
 // Writes an image (format from the extension) atomically. Throws InputError naming the file.
 void write_image(const std::string& path, const ImageRgb8& image);
+// Writes `pixels` (spec's layout) to `path` atomically, in the format its extension names
+// (common/image_file.hpp); InputError naming the file when no writer takes the extension or the
+// write fails, and the file that was there is kept.
+void write_image_file_atomically(const std::string& path, const ImageFileSpec& spec,
+                                 const void* pixels);
 
 // Peak signal-to-noise ratio over all RGB samples, in dB (infinity when identical).
 double psnr(const ImageRgb8& a, const ImageRgb8& b);

@@ -16,8 +16,8 @@
 #include "blocks/cube_address/cube_address_ports.hpp"
 #include "deflect/cube_map.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/one_per_clock.hpp"
 #include "hls/common/sc_ports.hpp"
-#include "hls/common/small_fifo.hpp"
 
 namespace tmu::hls {
 
@@ -38,33 +38,21 @@ class CubeAddressSc : public sc_core::sc_module {
 
  private:
   void run() {
-    SmallFifo<deflect::CubeAddress, 2> out;
-    // Not ready in reset: a ready port promises the next edge will take the input, and the
-    // edge that leaves reset is spent here.
-    in_ready_o.write(false);
-    out_valid_o.write(false);
-    out_face_o.write(0);
-    out_u_o.write(0);
-    out_v_o.write(0);
-    wait();
-    while (true) {
-      in_ready_o.write(out.size() <= 1);  // room for one more whatever the output does
-      out_valid_o.write(!out.empty());
-      out_face_o.write(out.empty() ? 0u : out.front().face);
-      out_u_o.write(out.empty() ? 0u : coord_bits(out.front().u));
-      out_v_o.write(out.empty() ? 0u : coord_bits(out.front().v));
-      wait();
-      // Everything below sees the values from before this edge.
-      if (out_valid_o.read() && out_ready_i.read()) out.pop();
-      if (in_ready_o.read() && in_valid_i.read()) {
-        const fx::Format c = fmts::kUnitComp;
-        out.push(deflect::cube_address(static_cast<int32_t>(signed_value(in_x_i.read(), c)),
+    run_one_per_clock<deflect::CubeAddress>(
+        *this,
+        [this](const deflect::CubeAddress* a) {
+          out_face_o.write(a ? a->face : 0u);
+          out_u_o.write(a ? coord_bits(a->u) : 0u);
+          out_v_o.write(a ? coord_bits(a->v) : 0u);
+        },
+        [this] {
+          const fx::Format c = fmts::kUnitComp;
+          return deflect::cube_address(static_cast<int32_t>(signed_value(in_x_i.read(), c)),
                                        static_cast<int32_t>(signed_value(in_y_i.read(), c)),
                                        static_cast<int32_t>(signed_value(in_z_i.read(), c)),
                                        static_cast<int>(in_face_log2_i.read().to_uint()),
-                                       seed_bits_));
-      }
-    }
+                                       seed_bits_);
+        });
   }
 
   // A TexCoord's port bits: its two's complement pattern.

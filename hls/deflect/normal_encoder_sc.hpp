@@ -16,8 +16,8 @@
 #include "blocks/normal_encoder/normal_encoder_ports.hpp"
 #include "deflect/normal_encoder.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/one_per_clock.hpp"
 #include "hls/common/sc_ports.hpp"
-#include "hls/common/small_fifo.hpp"
 
 namespace tmu::hls {
 
@@ -38,29 +38,18 @@ class NormalEncoderSc : public sc_core::sc_module {
 
  private:
   void run() {
-    SmallFifo<deflect::SphereAngle, 2> out;
-    // Not ready in reset: a ready port promises the next edge will take the input, and the
-    // edge that leaves reset is spent here.
-    in_ready_o.write(false);
-    out_valid_o.write(false);
-    out_phi_o.write(0);
-    out_theta_o.write(0);
-    wait();
-    while (true) {
-      in_ready_o.write(out.size() <= 1);  // room for one more whatever the output does
-      out_valid_o.write(!out.empty());
-      out_phi_o.write(out.empty() ? 0u : out.front().phi);
-      out_theta_o.write(out.empty() ? 0u : out.front().theta);
-      wait();
-      // Everything below sees the values from before this edge.
-      if (out_valid_o.read() && out_ready_i.read()) out.pop();
-      if (in_ready_o.read() && in_valid_i.read()) {
-        const fx::Format c = fmts::kUnitComp;
-        out.push(encoder_.encode(static_cast<int16_t>(signed_value(in_x_i.read(), c)),
+    run_one_per_clock<deflect::SphereAngle>(
+        *this,
+        [this](const deflect::SphereAngle* a) {
+          out_phi_o.write(a ? a->phi : 0u);
+          out_theta_o.write(a ? a->theta : 0u);
+        },
+        [this] {
+          const fx::Format c = fmts::kUnitComp;
+          return encoder_.encode(static_cast<int16_t>(signed_value(in_x_i.read(), c)),
                                  static_cast<int16_t>(signed_value(in_y_i.read(), c)),
-                                 static_cast<int16_t>(signed_value(in_z_i.read(), c))));
-      }
-    }
+                                 static_cast<int16_t>(signed_value(in_z_i.read(), c)));
+        });
   }
 
   deflect::NormalEncoder encoder_;

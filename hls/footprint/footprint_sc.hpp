@@ -1,5 +1,5 @@
 // SystemC model of the footprint assembly unit (000 §10, eq. 19-22, Figs. 12-13), the same
-// ports (TMU_SC_PORTS: tb/blocks/footprint/footprint_ports.hpp) and handshakes as
+// ports (TMU_SC_PORTS: tb/blocks/footprint/footprint.json) and handshakes as
 // rtl/footprint/tmu_footprint.sv. Its arithmetic is the golden model's
 // (golden/footprint/footprint.hpp: plan for the setup, probe for each probe's position,
 // average for the result); the probes are sampled by an instance of the TEXRAM trilinear unit's

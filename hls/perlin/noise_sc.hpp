@@ -11,8 +11,8 @@
 
 #include "blocks/noise/noise_ports.hpp"
 #include "formats/formats.hpp"
+#include "hls/common/one_per_clock.hpp"
 #include "hls/common/sc_ports.hpp"
-#include "hls/common/small_fifo.hpp"
 #include "perlin/noise.hpp"
 
 namespace tmu::hls {
@@ -29,28 +29,15 @@ class NoiseSc : public sc_core::sc_module {
 
  private:
   void run() {
-    SmallFifo<uint32_t, 2> out;
-    // Not ready in reset: a ready port promises the next edge will take the input, and the
-    // edge that leaves reset is spent here.
-    in_ready_o.write(false);
-    out_valid_o.write(false);
-    out_p_o.write(0);
-    wait();
-    while (true) {
-      in_ready_o.write(out.size() <= 1);  // room for one more whatever the output does
-      out_valid_o.write(!out.empty());
-      out_p_o.write(out.empty() ? 0u : out.front());
-      wait();
-      // Everything below sees the values from before this edge.
-      if (out_valid_o.read() && out_ready_i.read()) out.pop();
-      if (in_ready_o.read() && in_valid_i.read()) {
-        const fx::Format c = formats::kSolidCoord;
-        const int32_t p =
-            perlin::noise(perlin::NoiseConfig{}, signed_value(in_u_i.read(), c),
-                          signed_value(in_v_i.read(), c), signed_value(in_w_i.read(), c));
-        out.push(static_cast<uint32_t>(p) & ((1u << formats::kNoiseValue.width()) - 1));
-      }
-    }
+    run_one_per_clock<uint32_t>(
+        *this, [this](const uint32_t* p) { out_p_o.write(p ? *p : 0u); },
+        [this] {
+          const fx::Format c = formats::kSolidCoord;
+          const int32_t p =
+              perlin::noise(perlin::NoiseConfig{}, signed_value(in_u_i.read(), c),
+                            signed_value(in_v_i.read(), c), signed_value(in_w_i.read(), c));
+          return static_cast<uint32_t>(p) & ((1u << formats::kNoiseValue.width()) - 1);
+        });
   }
 };
 

@@ -10,8 +10,8 @@
 #include <systemc>
 
 #include "blocks/specular_combine/specular_combine_ports.hpp"
+#include "hls/common/one_per_clock.hpp"
 #include "hls/common/sc_ports.hpp"
-#include "hls/common/small_fifo.hpp"
 #include "texram/specular_combine.hpp"
 
 namespace tmu::hls {
@@ -28,26 +28,13 @@ class SpecularCombineSc : public sc_core::sc_module {
 
  private:
   void run() {
-    SmallFifo<uint32_t, 2> out;
-    // Not ready in reset: a ready port promises the next edge will take the input, and the
-    // edge that leaves reset is spent here.
-    in_ready_o.write(false);
-    out_valid_o.write(false);
-    out_colour_o.write(0);
-    wait();
-    while (true) {
-      in_ready_o.write(out.size() <= 1);  // room for one more whatever the output does
-      out_valid_o.write(!out.empty());
-      out_colour_o.write(out.empty() ? 0u : out.front());
-      wait();
-      // Everything below sees the values from before this edge.
-      if (out_valid_o.read() && out_ready_i.read()) out.pop();
-      if (in_ready_o.read() && in_valid_i.read()) {
-        out.push(texram::specular_combine(static_cast<uint32_t>(in_diffuse_i.read()),
+    run_one_per_clock<uint32_t>(
+        *this, [this](const uint32_t* c) { out_colour_o.write(c ? *c : 0u); },
+        [this] {
+          return texram::specular_combine(static_cast<uint32_t>(in_diffuse_i.read()),
                                           static_cast<uint32_t>(in_specular_i.read()),
-                                          static_cast<uint32_t>(in_reflectance_i.read())));
-      }
-    }
+                                          static_cast<uint32_t>(in_reflectance_i.read()));
+        });
   }
 };
 

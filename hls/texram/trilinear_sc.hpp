@@ -1,5 +1,5 @@
 // SystemC model of the TEXRAM trilinear unit (000 §2, §5, §6), the same ports (TMU_SC_PORTS:
-// tb/blocks/trilinear/trilinear_ports.hpp) and handshakes as rtl/texram/tmu_trilinear.sv. Its
+// tb/blocks/trilinear/trilinear.json) and handshakes as rtl/texram/tmu_trilinear.sv. Its
 // datapath is the golden model's (golden/texram/ trilinear.hpp: plan_sample for the levels,
 // weights, border operators, taps and bank access; tap_colour, blend_taps and combine for the
 // colour); the module adds the clocking: one clocked thread that, while idle, takes a CLUT write or

@@ -69,26 +69,3 @@ module tmu_ccc_decoder (
   assign out_rgb_o   = rgb_q;
 
 endmodule
-
-// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
-// simulation only: Yosys reads no bind).
-`ifndef SYNTHESIS
-bind tmu_ccc_decoder tmu_stream_check #(
-  .W($bits({clut_addr_i, clut_rgb_i}))
-) u_clut_check (
-  .clk_i, .rst_ni, .valid_i(clut_valid_i), .ready_i(clut_ready_o),
-  .data_i({clut_addr_i, clut_rgb_i})
-);
-bind tmu_ccc_decoder tmu_stream_check #(
-  .W($bits({req_block_i, req_texel_i}))
-) u_req_check (
-  .clk_i, .rst_ni, .valid_i(req_valid_i), .ready_i(req_ready_o),
-  .data_i({req_block_i, req_texel_i})
-);
-bind tmu_ccc_decoder tmu_stream_check #(
-  .W($bits(out_rgb_o))
-) u_out_check (
-  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
-  .data_i(out_rgb_o)
-);
-`endif

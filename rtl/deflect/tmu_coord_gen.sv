@@ -225,26 +225,3 @@ module tmu_coord_gen #(
 `endif
 
 endmodule
-
-// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
-// simulation only: Yosys reads no bind).
-`ifndef SYNTHESIS
-bind tmu_coord_gen tmu_stream_check #(
-  .W($bits({tw_table_i, tw_addr_i, tw_value_i}))
-) u_tw_check (
-  .clk_i, .rst_ni, .valid_i(tw_valid_i), .ready_i(tw_ready_o),
-  .data_i({tw_table_i, tw_addr_i, tw_value_i})
-);
-bind tmu_coord_gen tmu_stream_check #(
-  .W($bits({in_phi_i, in_theta_i}))
-) u_in_check (
-  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
-  .data_i({in_phi_i, in_theta_i})
-);
-bind tmu_coord_gen tmu_stream_check #(
-  .W($bits({out_un_o, out_vn_o, out_ur_o, out_vr_o, out_wr_o}))
-) u_out_check (
-  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
-  .data_i({out_un_o, out_vn_o, out_ur_o, out_vr_o, out_wr_o})
-);
-`endif

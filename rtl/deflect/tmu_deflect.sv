@@ -234,20 +234,3 @@ module tmu_deflect #(
 `endif
 
 endmodule
-
-// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
-// simulation only: Yosys reads no bind).
-`ifndef SYNTHESIS
-bind tmu_deflect tmu_stream_check #(
-  .W($bits({in_normal_phi_i, in_normal_theta_i, in_bump_phi_i, in_bump_theta_i}))
-) u_in_check (
-  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
-  .data_i({in_normal_phi_i, in_normal_theta_i, in_bump_phi_i, in_bump_theta_i})
-);
-bind tmu_deflect tmu_stream_check #(
-  .W($bits({out_phi_o, out_theta_o, out_access_o}))
-) u_out_check (
-  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
-  .data_i({out_phi_o, out_theta_o, out_access_o})
-);
-`endif

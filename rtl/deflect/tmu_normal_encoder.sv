@@ -74,21 +74,13 @@ module tmu_normal_encoder #(
   // ---- Pipeline control: tmu_pipe_ctrl ------------------------------------------------------
 
   // valid[j]: stage j holds a normal; load[j]: stage j takes stage j - 1's at this edge.
-  logic [NumStages:1] valid, load;
-
-  tmu_pipe_ctrl #(.NumStages(NumStages)) u_pipe_ctrl (
-    .clk_i       (clk_i),
-    .rst_ni      (rst_ni),
-    .in_valid_i  (in_valid_i),
-    .in_ready_o  (in_ready_o),
-    .out_valid_o (out_valid_o),
-    .out_ready_i (out_ready_i),
-    .valid_o     (valid),
-    .load_o      (load)
-  );
   // The stages load on load[j]; nothing here reads their valids.
-  logic unused_valid;
-  assign unused_valid = ^valid;
+  // verilator lint_off UNUSEDSIGNAL
+  logic [NumStages:1] valid, load;
+  // verilator lint_on UNUSEDSIGNAL
+
+  tmu_pipe_ctrl #(.NumStages(NumStages)) u_pipe_ctrl (.clk_i, .rst_ni, .in_valid_i, .in_ready_o,
+    .out_valid_o, .out_ready_i, .valid_o(valid), .load_o(load));
 
   // Signs (x, y, z at bits 0, 1, 2), from S3 on with the swaps (phi, theta at bits 3, 4),
   // travel to S8.
@@ -227,20 +219,3 @@ module tmu_normal_encoder #(
 `endif
 
 endmodule
-
-// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
-// simulation only: Yosys reads no bind).
-`ifndef SYNTHESIS
-bind tmu_normal_encoder tmu_stream_check #(
-  .W($bits({in_x_i, in_y_i, in_z_i}))
-) u_in_check (
-  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
-  .data_i({in_x_i, in_y_i, in_z_i})
-);
-bind tmu_normal_encoder tmu_stream_check #(
-  .W($bits({out_phi_o, out_theta_o}))
-) u_out_check (
-  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
-  .data_i({out_phi_o, out_theta_o})
-);
-`endif

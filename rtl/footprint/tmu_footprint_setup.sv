@@ -446,20 +446,3 @@ module tmu_footprint_setup #(
 `endif
 
 endmodule
-
-// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
-// simulation only: Yosys reads no bind).
-`ifndef SYNTHESIS
-bind tmu_footprint_setup tmu_stream_check #(
-  .W($bits({req_u_i, req_v_i, req_r1u_i, req_r1v_i, req_r2u_i, req_r2v_i, req_shade_i}))
-) u_req_check (
-  .clk_i, .rst_ni, .valid_i(req_valid_i), .ready_i(req_ready_o),
-  .data_i({req_u_i, req_v_i, req_r1u_i, req_r1v_i, req_r2u_i, req_r2v_i, req_shade_i})
-);
-bind tmu_footprint_setup tmu_stream_check #(
-  .W($bits({plan_u_o, plan_v_o, plan_du_o, plan_dv_o, plan_shade_o, plan_log2_n_o, plan_lambda_o}))
-) u_plan_check (
-  .clk_i, .rst_ni, .valid_i(plan_valid_o), .ready_i(plan_ready_i),
-  .data_i({plan_u_o, plan_v_o, plan_du_o, plan_dv_o, plan_shade_o, plan_log2_n_o, plan_lambda_o})
-);
-`endif

@@ -146,20 +146,3 @@ module tmu_fractal_pipelined #(
 `endif
 
 endmodule
-
-// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
-// simulation only: Yosys reads no bind).
-`ifndef SYNTHESIS
-bind tmu_fractal_pipelined tmu_stream_check #(
-  .W($bits({in_u_i, in_v_i, in_w_i}))
-) u_in_check (
-  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
-  .data_i({in_u_i, in_v_i, in_w_i})
-);
-bind tmu_fractal_pipelined tmu_stream_check #(
-  .W($bits({out_sum_o, out_turbulence_o}))
-) u_out_check (
-  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
-  .data_i({out_sum_o, out_turbulence_o})
-);
-`endif

@@ -471,26 +471,3 @@ module tmu_material #(
 `endif
 
 endmodule
-
-// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
-// simulation only: Yosys reads no bind).
-`ifndef SYNTHESIS
-bind tmu_material tmu_stream_check #(
-  .W($bits({wr_op_i, wr_reg_i, wr_value_i, wr_table_i, wr_index_i, wr_rgb_i}))
-) u_wr_check (
-  .clk_i, .rst_ni, .valid_i(wr_valid_i), .ready_i(wr_ready_o),
-  .data_i({wr_op_i, wr_reg_i, wr_value_i, wr_table_i, wr_index_i, wr_rgb_i})
-);
-bind tmu_material tmu_stream_check #(
-  .W($bits({in_u_i, in_v_i, in_w_i}))
-) u_in_check (
-  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
-  .data_i({in_u_i, in_v_i, in_w_i})
-);
-bind tmu_material tmu_stream_check #(
-  .W($bits(out_rgb_o))
-) u_out_check (
-  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
-  .data_i(out_rgb_o)
-);
-`endif

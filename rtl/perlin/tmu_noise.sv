@@ -127,21 +127,13 @@ module tmu_noise #(
   // ---- Pipeline control: tmu_pipe_ctrl ------------------------------------------------------
 
   // valid[j]: stage j holds a sample; load[j]: stage j takes stage j - 1's at this edge.
-  logic [NumStages:1] valid, load;
-
-  tmu_pipe_ctrl #(.NumStages(NumStages)) u_pipe_ctrl (
-    .clk_i       (clk_i),
-    .rst_ni      (rst_ni),
-    .in_valid_i  (in_valid_i),
-    .in_ready_o  (in_ready_o),
-    .out_valid_o (out_valid_o),
-    .out_ready_i (out_ready_i),
-    .valid_o     (valid),
-    .load_o      (load)
-  );
   // The stages load on load[j]; of the valids only an assertion reads one (valid[1]).
-  logic unused_valid;
-  assign unused_valid = ^valid;
+  // verilator lint_off UNUSEDSIGNAL
+  logic [NumStages:1] valid, load;
+  // verilator lint_on UNUSEDSIGNAL
+
+  tmu_pipe_ctrl #(.NumStages(NumStages)) u_pipe_ctrl (.clk_i, .rst_ni, .in_valid_i, .in_ready_o,
+    .out_valid_o, .out_ready_i, .valid_o(valid), .load_o(load));
 
   // The fade weights travel with the sample until their lerp: u to S4, v to S5, w to S6.
   logic [FW-1:0] s1_cu_q, s2_cu_q, s3_cu_q, s4_cu_q;
@@ -274,20 +266,3 @@ module tmu_noise #(
 `endif
 
 endmodule
-
-// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
-// simulation only: Yosys reads no bind).
-`ifndef SYNTHESIS
-bind tmu_noise tmu_stream_check #(
-  .W($bits({in_u_i, in_v_i, in_w_i}))
-) u_in_check (
-  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
-  .data_i({in_u_i, in_v_i, in_w_i})
-);
-bind tmu_noise tmu_stream_check #(
-  .W($bits(out_p_o))
-) u_out_check (
-  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
-  .data_i(out_p_o)
-);
-`endif

@@ -312,20 +312,3 @@ module tmu_mipgen #(
 `endif
 
 endmodule
-
-// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
-// simulation only: Yosys reads no bind).
-`ifndef SYNTHESIS
-bind tmu_mipgen tmu_stream_check #(
-  .W($bits({in_texel_i, in_above_i}))
-) u_in_check (
-  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
-  .data_i({in_texel_i, in_above_i})
-);
-bind tmu_mipgen tmu_stream_check #(
-  .W($bits({wr_level_o, wr_x_o, wr_y_o, wr_value_o, wr_bank_o, wr_addr_o}))
-) u_wr_check (
-  .clk_i, .rst_ni, .valid_i(wr_valid_o), .ready_i(wr_ready_i),
-  .data_i({wr_level_o, wr_x_o, wr_y_o, wr_value_o, wr_bank_o, wr_addr_o})
-);
-`endif

@@ -51,21 +51,13 @@ module tmu_specular_combine (
   // ---- Pipeline control: tmu_pipe_ctrl ------------------------------------------------------
 
   // valid[j]: stage j holds a colour; load[j]: stage j takes stage j - 1's at this edge.
-  logic [NumStages:1] valid, load;
-
-  tmu_pipe_ctrl #(.NumStages(NumStages)) u_pipe_ctrl (
-    .clk_i       (clk_i),
-    .rst_ni      (rst_ni),
-    .in_valid_i  (in_valid_i),
-    .in_ready_o  (in_ready_o),
-    .out_valid_o (out_valid_o),
-    .out_ready_i (out_ready_i),
-    .valid_o     (valid),
-    .load_o      (load)
-  );
   // The stages load on load[j]; of the valids only an assertion reads one (valid[1]).
-  logic unused_valid;
-  assign unused_valid = ^valid;
+  // verilator lint_off UNUSEDSIGNAL
+  logic [NumStages:1] valid, load;
+  // verilator lint_on UNUSEDSIGNAL
+
+  tmu_pipe_ctrl #(.NumStages(NumStages)) u_pipe_ctrl (.clk_i, .rst_ni, .in_valid_i, .in_ready_o,
+    .out_valid_o, .out_ready_i, .valid_o(valid), .load_o(load));
 
   // ---- -> S1: the products ------------------------------------------------------------------
 
@@ -121,20 +113,3 @@ module tmu_specular_combine (
   end
 
 endmodule
-
-// The ready/valid rules on every channel with a ready, in every instance (tmu_stream_check;
-// simulation only: Yosys reads no bind).
-`ifndef SYNTHESIS
-bind tmu_specular_combine tmu_stream_check #(
-  .W($bits({in_diffuse_i, in_specular_i, in_reflectance_i}))
-) u_in_check (
-  .clk_i, .rst_ni, .valid_i(in_valid_i), .ready_i(in_ready_o),
-  .data_i({in_diffuse_i, in_specular_i, in_reflectance_i})
-);
-bind tmu_specular_combine tmu_stream_check #(
-  .W($bits(out_colour_o))
-) u_out_check (
-  .clk_i, .rst_ni, .valid_i(out_valid_o), .ready_i(out_ready_i),
-  .data_i(out_colour_o)
-);
-`endif

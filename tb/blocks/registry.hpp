@@ -81,14 +81,15 @@ std::vector<BlockVariant> block_variants();
 
 }  // namespace tmu::tb
 
-// In a block's .cpp: registers it under its name (rtl/blocks.cmake lists the blocks) with its
-// one-line summary and its old names.
-#define TMU_REGISTER_BLOCK(block, Class, summary, ...)                        \
-  namespace tmu::tb {                                                         \
-  BlockInfo block_info_##block() { return {#block, summary, {__VA_ARGS__}}; } \
-  std::unique_ptr<Block> make_block_##block(const BlockOptions& o) {          \
-    return std::make_unique<Class>(o);                                        \
-  }                                                                           \
+// At the end of a block's .cpp: registers Class under the block's name (rtl/blocks.cmake lists the
+// blocks) with the one-line summary and old names of its description (TMU_BLOCK_INFO_<block>,
+// generated from tb/blocks/<block>/<block>.json).
+#define TMU_REGISTER_BLOCK(block, Class)                             \
+  namespace tmu::tb {                                                \
+  BlockInfo block_info_##block() { return TMU_BLOCK_INFO_##block; }  \
+  std::unique_ptr<Block> make_block_##block(const BlockOptions& o) { \
+    return std::make_unique<Class>(o);                               \
+  }                                                                  \
   }
 
 namespace tmu::tb {}  // namespace tmu::tb

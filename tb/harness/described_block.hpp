@@ -10,6 +10,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,18 @@ class DescribedBlockOf : public DescribedBlock {
     return std::make_shared<Derived>(static_cast<const Derived&>(*this));
   }
 };
+
+// The pieces every block writes for itself, declared in its class as `TMU_BLOCK_PIECES;`
+// (harness/block.hpp says what each is): its directed and random items, its golden Model and
+// its coverage cases with the predicate that marks them. The optional ones (ideal(),
+// environment(), setup_items(), variant()) it declares itself where it has them.
+#define TMU_BLOCK_PIECES                                                                         \
+  std::vector<Txn> directed_items() const override;                                              \
+  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;              \
+  std::unique_ptr<Model> golden() const override;                                                \
+  std::vector<std::string> coverage_cases() const override;                                      \
+  void cover(const std::vector<Txn>& items, size_t index, const Txn& output, Coverage& coverage) \
+      const override
 
 // The golden or ideal level of a block: a fresh Model per run.
 std::unique_ptr<Engine> model_engine(const DescribedBlock& block, const std::string& level);

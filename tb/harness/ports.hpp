@@ -1,9 +1,14 @@
 // A block's port list, written once, and what the harness derives from it.
 //
-// Each block describes its top-level ports in tb/blocks/<block>/<block>_ports.hpp as one
-// X-macro, TMU_PORTS_<block>(C, F): a C row per channel, an F row per field. For the noise
-// unit (rtl/perlin/tmu_noise.sv):
+// Each block describes its top-level ports in its description, tb/blocks/<block>/<block>.json
+// (docs/harness.md, "The block description"), which scripts/gen_block_descriptions.py turns at
+// configure time into the X-macro TMU_PORTS_<block>(C, F) of blocks/<block>/<block>_ports.hpp
+// (in build/generated/descriptions): a C row per channel, an F row per field. For the noise
+// unit (rtl/perlin/tmu_noise.sv), the description's
 //
+//   "channels": [{"channel": "in", "kind": "Sample", "fields": {"u": "SolidCoord", ...}},
+//                {"channel": "out", "kind": "Result", "fields": {"p": "NoiseValue"}}]
+// gives
 //   #define TMU_PORTS_noise(C, F)
 //     C(Sample, in)                   in_valid_i, in_ready_o; one output per item
 //     F(In, in, u, SolidCoord, 1)     in_u_i, format SolidCoord of formats.def

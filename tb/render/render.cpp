@@ -80,22 +80,12 @@ void write_exr(const std::string& path, const Band& band, const host::Scene& sce
     for (int c = 0; c < 3; ++c)
       px[at + static_cast<size_t>(c)] = static_cast<float>(ideal[k][c] / 255.0);
   }
-  write_atomically(path, [&](const std::string& tmp) {
-    ImageFileSpec spec;
-    spec.width = band.frame_width;
-    spec.height = band.row_end - band.row_begin;
-    spec.channels = 3;
-    spec.format = PixelFormat::kFloat;
-    std::string why;
-    switch (write_image_file(path, tmp, spec, px.data(), &why)) {
-      case ImageWrite::kOk:
-        return;
-      case ImageWrite::kNoWriter:
-        throw InputError(path, "", "no OpenEXR writer");
-      case ImageWrite::kFailed:
-        throw InputError(path, "", "cannot write: " + why);
-    }
-  });
+  ImageFileSpec spec;
+  spec.width = band.frame_width;
+  spec.height = band.row_end - band.row_begin;
+  spec.channels = 3;
+  spec.format = PixelFormat::kFloat;
+  write_image_file_atomically(path, spec, px.data());
 }
 
 }  // namespace

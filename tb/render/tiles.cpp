@@ -34,24 +34,14 @@ std::pair<int, int> parse_tile(const std::string& text) {
 }
 
 void write_band(const std::string& path, const ImageRgb8& image, const Band& band) {
-  write_atomically(path, [&](const std::string& tmp) {
-    ImageFileSpec spec;
-    spec.width = image.width;
-    spec.height = image.height;
-    spec.channels = 3;
-    spec.attributes = {{"tmu:band", fmt::format("{}/{}", band.index, band.count)},
-                       {"tmu:frame", fmt::format("{}x{}", band.frame_width, band.frame_height)},
-                       {"tmu:rows", fmt::format("{}-{}", band.row_begin, band.row_end)}};
-    std::string why;
-    switch (write_image_file(path, tmp, spec, image.pixels.data(), &why)) {
-      case ImageWrite::kOk:
-        return;
-      case ImageWrite::kNoWriter:
-        throw InputError(path, "", "no image writer for this extension");
-      case ImageWrite::kFailed:
-        throw InputError(path, "", "cannot write image: " + why);
-    }
-  });
+  ImageFileSpec spec;
+  spec.width = image.width;
+  spec.height = image.height;
+  spec.channels = 3;
+  spec.attributes = {{"tmu:band", fmt::format("{}/{}", band.index, band.count)},
+                     {"tmu:frame", fmt::format("{}x{}", band.frame_width, band.frame_height)},
+                     {"tmu:rows", fmt::format("{}-{}", band.row_begin, band.row_end)}};
+  write_image_file_atomically(path, spec, image.pixels.data());
 }
 
 ImageRgb8 merge_bands(const std::vector<std::string>& paths) {

@@ -29,27 +29,14 @@ TEST(CccDecoderTest, HeaderExample) {
   items.push_back(clut_write_item(0x0B, 0xAABBCC));
   items.push_back(decode_item(0x0A0B0002u, 1));
   items.push_back(decode_item(0x0A0B0002u, 0));
-  for (const std::string level : {"golden", "hls", "rtl"}) {
-    const RunResult r = block.engine(level)->run(items, RunOptions{});
-    ASSERT_TRUE(r.error.empty()) << level << ": " << r.error;
-    ASSERT_EQ(r.outputs.size(), 2u) << level;
-    EXPECT_EQ(r.outputs[0].f[D::out_rgb], 0xAABBCCu) << level;
-    EXPECT_EQ(r.outputs[1].f[D::out_rgb], 0x112233u) << level;
-  }
+  testing::expect_outputs(block, items, D::out_rgb, {0xAABBCCu, 0x112233u});
 }
 
 // One texel per clock: without bubbles or stalls every item (decode or CLUT write) takes one
 // cycle, plus the output register and the harness's 16 drain cycles (the hls model's
 // registered ready one more, after reset).
 TEST(CccDecoderTest, OneTexelPerClock) {
-  CosimOptions o = testing::cosim_options(3, 10'000, {"hls", "rtl"});
-  o.in_idle = 0.0;
-  o.out_stall = 0.0;
-  std::stringstream log;
-  const CosimResult r = run_cosim(CccDecoderBlock(), o, log);
-  ASSERT_TRUE(r.pass) << log.str();
-  EXPECT_LE(r.runs.at("rtl").cycles, r.items + 1 + 16) << log.str();
-  EXPECT_LE(r.runs.at("hls").cycles, r.items + 2 + 16) << log.str();
+  testing::expect_full_rate(CccDecoderBlock(), 10'000, {{"rtl", 1 + 16}, {"hls", 2 + 16}});
 }
 
 // A texture whose sides are not multiples of 4 (edge blocks padded), decoded texel by texel

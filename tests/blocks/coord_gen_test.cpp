@@ -62,14 +62,7 @@ TEST(CoordGenTest, PortLoadedTablesEvaluateAsCoordTables) {
 TEST(CoordGenTest, OneItemPerClock) {
   BlockOptions b;
   b.seed = 3;
-  CosimOptions o = testing::cosim_options(3, 20'000, {"hls", "rtl"});
-  o.in_idle = 0.0;
-  o.out_stall = 0.0;
-  std::stringstream log;
-  const CosimResult r = run_cosim(CoordGenBlock(b), o, log);
-  ASSERT_TRUE(r.pass) << log.str();
-  EXPECT_LE(r.runs.at("rtl").cycles, r.items + 3 + 16 + 1) << log.str();
-  EXPECT_LE(r.runs.at("hls").cycles, r.items + 20) << log.str();
+  testing::expect_full_rate(CoordGenBlock(b), 20'000, {{"rtl", 3 + 16 + 1}, {"hls", 20}});
 }
 
 // A grid and width no variant verilates (A = 8, W = 9): golden = hls on the directed and

@@ -85,13 +85,7 @@ TEST(MaterialTest, HeaderExample) {
   items.push_back(material_sample_item(0, 0x080000, 0));
   for (const bool shared : {false, true}) {
     const MaterialBlock block = material_block(shared);
-    for (const std::string level : {"golden", "hls", "rtl"}) {
-      const RunResult res = block.engine(level)->run(items, RunOptions{});
-      ASSERT_TRUE(res.error.empty()) << level << ": " << res.error;
-      ASSERT_EQ(res.outputs.size(), 2u) << level;
-      EXPECT_EQ(res.outputs[0].f[D::out_rgb], tables.main[127]) << level;
-      EXPECT_EQ(res.outputs[1].f[D::out_rgb], tables.main[0]) << level;
-    }
+    testing::expect_outputs(block, items, D::out_rgb, {tables.main[127], tables.main[0]});
   }
 }
 

@@ -38,26 +38,13 @@ TEST(NoiseTest, HeaderExamples) {
   EXPECT_EQ(r0, 0);
   // c_u = 128: P = r0 16 + round(128 (r1 - r0) 16 / 256) = 8 (r0 + r1), exact.
   const auto want = static_cast<uint64_t>(8 * (r0 + r1)) & 0xFFFu;
-  for (const std::string level : {"golden", "hls", "rtl"}) {
-    const RunResult r = block.engine(level)->run(items, RunOptions{});
-    ASSERT_TRUE(r.error.empty()) << level << ": " << r.error;
-    ASSERT_EQ(r.outputs.size(), 2u) << level;
-    EXPECT_EQ(r.outputs[0].f[desc::noise::out_p], 0u) << level;
-    EXPECT_EQ(r.outputs[1].f[desc::noise::out_p], want) << level;
-  }
+  testing::expect_outputs(block, items, desc::noise::out_p, {0u, want});
 }
 
 // One sample per clock: without bubbles or stalls the rtl takes the items, its latency (7
 // cycles) and the harness's 16 drain cycles; the hls model keeps the same rate.
 TEST(NoiseTest, OneSamplePerClock) {
-  CosimOptions o = testing::cosim_options(3, 20'000, {"hls", "rtl"});
-  o.in_idle = 0.0;
-  o.out_stall = 0.0;
-  std::stringstream log;
-  const CosimResult r = run_cosim(NoiseBlock(), o, log);
-  ASSERT_TRUE(r.pass) << log.str();
-  EXPECT_LE(r.runs.at("rtl").cycles, r.items + 7 + 16) << log.str();
-  EXPECT_LE(r.runs.at("hls").cycles, r.items + 7 + 16) << log.str();
+  testing::expect_full_rate(NoiseBlock(), 20'000, {{"rtl", 7 + 16}, {"hls", 7 + 16}});
 }
 
 }  // namespace

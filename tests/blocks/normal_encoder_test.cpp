@@ -33,26 +33,14 @@ NormalEncoderBlock block_of(int seed_bits, int lut_exp, int lut_mant) {
 // The header's example: N = (0.5, 0, 1.0) gives phi 38 (atan 0.5 = 37.8 steps), theta +0.
 TEST(NormalEncoderTest, HeaderExample) {
   const NormalEncoderBlock block;
-  for (const std::string level : {"golden", "hls", "rtl"}) {
-    const RunResult r = block.engine(level)->run({normal_item(8192, 0, 16384)}, RunOptions{});
-    ASSERT_TRUE(r.error.empty()) << level << ": " << r.error;
-    ASSERT_EQ(r.outputs.size(), 1u) << level;
-    EXPECT_EQ(r.outputs[0].f[D::out_phi], 38u) << level;
-    EXPECT_EQ(r.outputs[0].f[D::out_theta], 0u) << level;
-  }
+  testing::expect_outputs(block, {normal_item(8192, 0, 16384)}, D::out_phi, {38u});
+  testing::expect_outputs(block, {normal_item(8192, 0, 16384)}, D::out_theta, {0u});
 }
 
 // One normal per clock: without bubbles or stalls the rtl takes the items, its latency (8
 // cycles) and the harness's 16 drain cycles; the hls model keeps the same rate.
 TEST(NormalEncoderTest, OneNormalPerClock) {
-  CosimOptions o = testing::cosim_options(3, 20'000, {"hls", "rtl"});
-  o.in_idle = 0.0;
-  o.out_stall = 0.0;
-  std::stringstream log;
-  const CosimResult r = run_cosim(NormalEncoderBlock(), o, log);
-  ASSERT_TRUE(r.pass) << log.str();
-  EXPECT_LE(r.runs.at("rtl").cycles, r.items + 8 + 16) << log.str();
-  EXPECT_LE(r.runs.at("hls").cycles, r.items + 8 + 16) << log.str();
+  testing::expect_full_rate(NormalEncoderBlock(), 20'000, {{"rtl", 8 + 16}, {"hls", 8 + 16}});
 }
 
 // The directed items alone reach every angle-table index a ratio can reach, for phi and for

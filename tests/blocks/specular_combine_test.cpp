@@ -61,27 +61,15 @@ TEST(SpecularCombineTest, HeaderExampleThroughEveryEngine) {
   const SpecularCombineBlock block;
   const std::vector<Txn> items = {specular_combine_item(0xF0804020u, 0x80FF40FFu, 0x40FFFF00u),
                                   specular_combine_item(0x10203040u, 0xFFFFFFFFu, 0xFFFFFF00u)};
-  for (const std::string level : {"golden", "hls", "rtl"}) {
-    const RunResult r = block.engine(level)->run(items, RunOptions{});
-    ASSERT_TRUE(r.error.empty()) << level << ": " << r.error;
-    ASSERT_EQ(r.outputs.size(), 2u) << level;
-    EXPECT_EQ(r.outputs[0].f[desc::specular_combine::out_colour], 0xFFFF8020u) << level;
-    EXPECT_EQ(r.outputs[1].f[desc::specular_combine::out_colour], 0xFFFFFF40u) << level;
-  }
+  testing::expect_outputs(block, items, desc::specular_combine::out_colour,
+                          {0xFFFF8020u, 0xFFFFFF40u});
 }
 
 // One colour per clock: without bubbles or stalls the rtl takes the items, its latency (2
 // cycles) and the harness's 16 drain cycles; the hls model keeps the same rate.
 TEST(SpecularCombineTest, OneColourPerClock) {
-  CosimOptions o = testing::cosim_options(3, 20'000, {"hls", "rtl"});
-  o.directed = false;
-  o.in_idle = 0.0;
-  o.out_stall = 0.0;
-  std::stringstream log;
-  const CosimResult r = run_cosim(SpecularCombineBlock(), o, log);
-  ASSERT_TRUE(r.pass) << log.str();
-  EXPECT_LE(r.runs.at("rtl").cycles, r.items + 2 + 16) << log.str();
-  EXPECT_LE(r.runs.at("hls").cycles, r.items + 2 + 16) << log.str();
+  testing::expect_full_rate(SpecularCombineBlock(), 20'000, {{"rtl", 2 + 16}, {"hls", 2 + 16}},
+                            false);
 }
 
 }  // namespace

@@ -10,10 +10,6 @@
 #include "harness/described_engines.hpp"
 #include "rtl_models_bank_address.hpp"
 
-TMU_REGISTER_BLOCK(bank_address, BankAddressBlock,
-                   "TEXRAM bank address unit (000 §2, Fig. 2): level, stored x, y and byte plane "
-                   "-> bank and cell, as Geometry::cell")
-
 namespace tmu::tb {
 namespace fmts = tmu::formats;
 using D = desc::bank_address;
@@ -197,3 +193,5 @@ void BankAddressBlock::cover(const std::vector<Txn>& items, size_t index, const 
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(bank_address, BankAddressBlock)

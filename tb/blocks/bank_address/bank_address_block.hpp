@@ -4,7 +4,7 @@
 // texram::Geometry::cell (golden/texram/layout.hpp; rtl/texram/tmu_bank_address.sv, the unit
 // tmu_mipgen and tmu_trilinear instantiate).
 //
-// Channels (bank_address_ports.hpp): in (level, x, y, plane) gives out (bank, addr) in the same
+// Channels (bank_address.json): in (level, x, y, plane) gives out (bank, addr) in the same
 // cycle; cfg is the layout: log2 of the texture's sides, four byte planes or one, a block grid
 // or texels. A position outside the layout is a stimulus error golden reports (the unit checks
 // nothing). No hls level: no SystemC module computes addresses on its own (the trilinear and
@@ -36,12 +36,7 @@ class BankAddressBlock : public DescribedBlockOf<BankAddressBlock> {
   explicit BankAddressBlock(const BlockOptions& options = {});
 
   std::vector<Txn> setup_items() const override;
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
+  TMU_BLOCK_PIECES;
 
   // The configuration item of a layout, and the item of a position.
   static Txn config_item(const texram::Geometry& layout);

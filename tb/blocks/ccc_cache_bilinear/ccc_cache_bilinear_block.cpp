@@ -17,10 +17,6 @@
 #include "rtl_models_ccc_cache_bilinear.hpp"
 
 TMU_DESCRIBE_SC(ccc_cache_bilinear)
-TMU_REGISTER_BLOCK(ccc_cache_bilinear, CccCacheBilinearBlock,
-                   "CCC low-cost unit (000 §4, Figs. 6-7): 4-entry block cache with lookahead + "
-                   "bilinear, texture memory requests compared",
-                   "ccc-bilinear")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -440,3 +436,5 @@ void CccCacheBilinearBlock::cover(const std::vector<Txn>& items, size_t index, c
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(ccc_cache_bilinear, CccCacheBilinearBlock)

@@ -2,7 +2,7 @@
 // (alias ccc-bilinear): a 4-entry cache of decoded CCC blocks with neighbour lookahead
 // feeding a bilinear interpolator (000 §4, Figs. 6 and 7; golden/ccc/ccc_cache_bilinear.hpp).
 //
-// Channels (ccc_cache_bilinear_ports.hpp): req (u, v SQ16.8) gives one rgb each; clut writes
+// Channels (ccc_cache_bilinear.json): req (u, v SQ16.8) gives one rgb each; clut writes
 // an entry (and invalidates the cache); cfg is the texture's size, the lookahead and the seed
 // of the texture the memory holds; the memory answers block requests; the statistics are
 // hits, misses and prefetches.
@@ -39,13 +39,8 @@ class CccCacheBilinearBlock : public DescribedBlockOf<CccCacheBilinearBlock> {
   CccCacheBilinearBlock(const BlockOptions& options, std::shared_ptr<const ccc::Texture> texture);
 
   std::vector<Txn> setup_items() const override;
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
+  TMU_BLOCK_PIECES;
   std::unique_ptr<Environment> environment(uint64_t seed) const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
   std::string repro_options() const override;
 
   // The first environment's texture (the given one, or the seed's).

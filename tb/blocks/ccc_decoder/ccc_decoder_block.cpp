@@ -13,10 +13,6 @@
 #include "rtl_models_ccc_decoder.hpp"
 
 TMU_DESCRIBE_SC(ccc_decoder)
-TMU_REGISTER_BLOCK(ccc_decoder, CccDecoderBlock,
-                   "CCC decoder (000 §3, Fig. 5): block word + texel address -> RGB888 through "
-                   "the CLUT, written through its own port",
-                   "ccc")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -175,3 +171,5 @@ void CccDecoderBlock::cover(const std::vector<Txn>& items, size_t index, const T
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(ccc_decoder, CccDecoderBlock)

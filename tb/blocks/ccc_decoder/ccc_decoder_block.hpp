@@ -3,7 +3,7 @@
 // 256 x RGB888 colour look-up table (000 §3, Fig. 5; golden/ccc/ccc_decoder.hpp,
 // rtl/ccc/tmu_ccc_decoder.sv, hls/ccc/ccc_decoder_sc.hpp).
 //
-// Channels (ccc_decoder_ports.hpp): req (block, texel) gives one rgb each; clut writes an entry
+// Channels (ccc_decoder.json): req (block, texel) gives one rgb each; clut writes an entry
 // and gives none. The CLUT is a RAM without reset: the stimulus starts with the load of every
 // entry (colours drawn from the seed), and golden rejects a decode of an entry never written.
 #pragma once
@@ -29,12 +29,7 @@ class CccDecoderBlock : public DescribedBlockOf<CccDecoderBlock> {
   // options.seed draws the colours of the CLUT load.
   explicit CccDecoderBlock(const BlockOptions& options = {});
   std::vector<Txn> setup_items() const override;
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
+  TMU_BLOCK_PIECES;
 
  private:
   uint64_t seed_;

@@ -16,10 +16,6 @@
 #include "rtl_models_coord_gen.hpp"
 
 TMU_DESCRIBE_SC(coord_gen)
-TMU_REGISTER_BLOCK(coord_gen, CoordGenBlock,
-                   "Shading/environment-map coordinates (001 §5, eq. 17-22): seven tables -> uN, "
-                   "vN, uR, vR, wR",
-                   "coord-gen")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -432,3 +428,5 @@ MapCoords coord_gen_output(const Txn& output) {
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(coord_gen, CoordGenBlock)

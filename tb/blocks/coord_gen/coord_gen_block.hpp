@@ -43,12 +43,7 @@ class CoordGenBlock : public DescribedBlockOf<CoordGenBlock> {
  public:
   explicit CoordGenBlock(const BlockOptions& options = {});
   std::vector<Txn> setup_items() const override;
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
+  TMU_BLOCK_PIECES;
   // "" for the default tables, else "a<A>w<W>" (a key of rtl/blocks.cmake where verilated).
   std::string variant() const override;
   std::string repro_options() const override;

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "blocks/unit_vectors.hpp"
 #include "deflect/cube_map.hpp"
 #include "formats/formats.hpp"
 #include "harness/described_engines.hpp"
@@ -17,11 +18,6 @@
 #include "rtl_models_cube_address.hpp"
 
 TMU_DESCRIBE_SC(cube_address)
-TMU_REGISTER_BLOCK(cube_address, CubeAddressBlock,
-                   "Cube environment map addressing (000 §7): reflection vector -> face and "
-                   "texel coordinate, dividing by the largest component (the normal encoder's "
-                   "divider)",
-                   "cube-map")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -59,23 +55,9 @@ class Golden : public Model {
   }
 };
 
-int16_t saturate(double v) {
-  return static_cast<int16_t>(std::clamp(std::lround(v), -32768L, 32767L));
-}
-
-// A random direction (uniform on the sphere), as doubles.
-std::array<double, 3> random_direction(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  while (true) {
-    const std::array<double, 3> v = {g(rng), g(rng), g(rng)};
-    const double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (len > 1e-6) return {v[0] / len, v[1] / len, v[2] / len};
-  }
-}
-
 std::array<int32_t, 3> scaled(const std::array<double, 3>& dir, double length) {
-  const double s = length * kOne;
-  return {saturate(dir[0] * s), saturate(dir[1] * s), saturate(dir[2] * s)};
+  const std::array<int16_t, 3> c = unit_comps(dir, length);
+  return {c[0], c[1], c[2]};
 }
 
 // The sizes every directed vector is addressed at: the smallest faces (1 and 2 texels, where
@@ -340,3 +322,5 @@ void CubeAddressBlock::cover(const std::vector<Txn>& items, size_t index, const 
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(cube_address, CubeAddressBlock)

@@ -3,7 +3,7 @@
 // dividing by the largest component (000 §7; golden/deflect/cube_map.hpp,
 // rtl/deflect/tmu_cube_address.sv, hls/deflect/cube_address_sc.hpp).
 //
-// Channels (cube_address_ports.hpp): in (x, y, z UnitComp SQ2.14, as the coordinate
+// Channels (cube_address.json): in (x, y, z UnitComp SQ2.14, as the coordinate
 // generator's uR, vR, wR, and face_log2 MipLog2: the face's side is 2^face_log2 texels, 0..10,
 // a per-request configuration) gives one out (face CubeFace 0..5: +X, -X, +Y, -Y, +Z, -Z; u, v
 // TexCoord SQ16.8) each. The dividers' seed table has the golden default's 7 index bits, the
@@ -29,12 +29,7 @@ namespace tmu::tb {
 class CubeAddressBlock : public DescribedBlockOf<CubeAddressBlock> {
  public:
   explicit CubeAddressBlock(const BlockOptions& options = {});
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
+  TMU_BLOCK_PIECES;
 
   static constexpr int kSeedBits = 7;  // the dividers' seed-table index bits (verilated)
 

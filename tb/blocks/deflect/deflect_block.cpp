@@ -11,9 +11,6 @@
 #include "rtl_models_deflect.hpp"
 
 TMU_DESCRIBE_SC(deflect)
-TMU_REGISTER_BLOCK(deflect, DeflectBlock,
-                   "Bump deflection unit (001 §4.4, §6.2): phi_D - theta_N, first-octant s2s map "
-                   "through a one-block MBR, + phi_N; the map memory's requests compared")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -384,3 +381,5 @@ void DeflectBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(deflect, DeflectBlock)

@@ -36,13 +36,8 @@ namespace tmu::tb {
 class DeflectBlock : public DescribedBlockOf<DeflectBlock> {
  public:
   explicit DeflectBlock(const BlockOptions& options = {});
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
+  TMU_BLOCK_PIECES;
   std::unique_ptr<Environment> environment(uint64_t seed) const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
   std::string repro_options() const override;
 
   const std::shared_ptr<const deflect::S2sMap>& map() const { return map_; }

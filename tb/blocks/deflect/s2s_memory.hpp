@@ -1,6 +1,6 @@
 // The map memory of the deflection unit's timed runs (hls, rtl): it holds the
 // spherical-to-spherical map's blocks (golden/deflect/s2s_map.hpp) and answers the unit's
-// block requests on the description's channels (tb/blocks/deflect/deflect_ports.hpp).
+// block requests on the description's channels (tb/blocks/deflect/deflect.json).
 //
 // A request (valid for one cycle, no ready: the memory takes every request) names a block;
 // the response is valid for one cycle, `latency` cycles after the request plus 0..jitter drawn

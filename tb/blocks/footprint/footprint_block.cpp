@@ -18,9 +18,6 @@
 #include "texram/trilinear.hpp"
 
 TMU_DESCRIBE_SC(footprint)
-TMU_REGISTER_BLOCK(footprint, FootprintBlock,
-                   "Footprint assembly (000 §10): N trilinear probes along the longer derivative, "
-                   "averaged; every memory access compared")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -465,3 +462,5 @@ void FootprintBlock::cover(const std::vector<Txn>& items, size_t index, const Tx
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(footprint, FootprintBlock)

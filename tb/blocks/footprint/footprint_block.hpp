@@ -3,7 +3,7 @@
 // probes along its longer side, averaged (000 §10, eq. 19-22; golden/footprint/footprint.hpp,
 // rtl/footprint/tmu_footprint.sv, hls/footprint/footprint_sc.hpp).
 //
-// Channels (footprint_ports.hpp): req (u, v TexCoord, r1u, r1v, r2u, r2v TexDeriv, the shade)
+// Channels (footprint.json): req (u, v TexCoord, r1u, r1v, r2u, r2v TexDeriv, the shade)
 // gives one rgba each; clut writes an entry of its trilinear unit's CLUT; cfg is the trilinear
 // unit's configuration and texture (the trilinear block's fields, in the same slots) and the
 // setup's maximum probe count and q rule; the memory is the trilinear block's (every access
@@ -62,13 +62,8 @@ class FootprintBlock : public DescribedBlockOf<FootprintBlock> {
   FootprintBlock(const BlockOptions& options, FootprintEnv env);
 
   std::vector<Txn> setup_items() const override;
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
+  TMU_BLOCK_PIECES;
   std::unique_ptr<Environment> environment(uint64_t seed) const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
   std::string variant() const override;
   std::string repro_options() const override;
 

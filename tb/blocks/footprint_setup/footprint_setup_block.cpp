@@ -10,10 +10,6 @@
 #include "harness/described_engines.hpp"
 #include "rtl_models_footprint_setup.hpp"
 
-TMU_REGISTER_BLOCK(footprint_setup, FootprintSetupBlock,
-                   "Footprint setup (000 §10, eq. 19-22): derivative vectors -> probe count, "
-                   "marching direction and lambda, as footprint::plan")
-
 namespace tmu::tb {
 namespace fmts = tmu::formats;
 using D = desc::footprint_setup;
@@ -190,3 +186,5 @@ void FootprintSetupBlock::cover(const std::vector<Txn>& items, size_t index, con
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(footprint_setup, FootprintSetupBlock)

@@ -3,7 +3,7 @@
 // eq. 19-22; golden footprint::plan, golden/footprint/footprint.hpp; rtl/footprint/
 // tmu_footprint_setup.sv, the setup inside tmu_footprint).
 //
-// Channels (footprint_setup_ports.hpp): req (the fragment) gives one plan each (the centre and
+// Channels (footprint_setup.json): req (the fragment) gives one plan each (the centre and
 // shade as they came, the longer vector as it came, k, lambda); cfg is the maximum probe count
 // and the q rule; stat busy (a fragment in a stage) must read 0 at the end. No hls level: the
 // footprint unit's SystemC model plans inline with footprint::plan, golden's, and has no setup
@@ -37,12 +37,7 @@ class FootprintSetupBlock : public DescribedBlockOf<FootprintSetupBlock> {
   explicit FootprintSetupBlock(const BlockOptions& options);
 
   std::vector<Txn> setup_items() const override;
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
+  TMU_BLOCK_PIECES;
   std::string variant() const override;
   std::string repro_options() const override;
 

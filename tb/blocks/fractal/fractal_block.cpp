@@ -12,10 +12,6 @@
 #include "rtl_models_fractal.hpp"
 
 TMU_DESCRIBE_SC(fractal)
-TMU_REGISTER_BLOCK(fractal, FractalBlock,
-                   "Fractal sums of four octaves (002 §4.1.1): fractal sum and turbulence; four "
-                   "noise units pipelined, or one shared (--fractal shared, 4 clocks per sample)",
-                   "turbulence")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -177,3 +173,5 @@ void FractalBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&
 std::string FractalBlock::variant() const { return shared_ ? "shared" : ""; }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(fractal, FractalBlock)

@@ -24,13 +24,8 @@ namespace tmu::tb {
 class FractalBlock : public DescribedBlockOf<FractalBlock> {
  public:
   explicit FractalBlock(const BlockOptions& options = {});
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
+  TMU_BLOCK_PIECES;
   std::unique_ptr<Model> ideal() const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
   std::string variant() const override;
 
   bool shared() const { return shared_; }

@@ -13,10 +13,6 @@
 #include "rtl_models_material.hpp"
 
 TMU_DESCRIBE_SC(material)
-TMU_REGISTER_BLOCK(material, MaterialBlock,
-                   "Material unit (002 §4.2): registers and colour tables behind a write port; "
-                   "(u, v, w) -> shape -> fractal sums -> marble, wood, brick, fog, cloud, fire "
-                   "RGB888")
 
 namespace tmu::tb {
 using perlin::ColourTables;
@@ -797,3 +793,5 @@ void MaterialBlock::cover(const std::vector<Txn>& items, size_t index, const Txn
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(material, MaterialBlock)

@@ -3,7 +3,7 @@
 // and two colour tables behind a write port, and per sample the stages shape -> fractal ->
 // colour (rtl/perlin/tmu_material.sv, hls/perlin/material_sc.hpp).
 //
-// Channels (material_ports.hpp), items applied in order (a sample sees every write before it):
+// Channels (material.json), items applied in order (a sample sees every write before it):
 //   in   a sample: u, v, w (SolidCoord SQ12.12) -> rgb (RGB888)
 //   wr   a write: wr_op 0 a register (reg: MaterialReg id, 12..15 ignored; value: 16 bits, a
 //        value out of the register's range stored as its nearest limit,
@@ -69,12 +69,7 @@ class MaterialBlock : public DescribedBlockOf<MaterialBlock> {
   explicit MaterialBlock(const BlockOptions& options = {});
 
   std::vector<Txn> setup_items() const override;
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
+  TMU_BLOCK_PIECES;
   std::string variant() const override;
 
   bool shared() const { return shared_; }

@@ -7,10 +7,6 @@
 #include "perlin/materials.hpp"
 #include "rtl_models_material_fire.hpp"
 
-TMU_REGISTER_BLOCK(material_fire, MaterialFireBlock,
-                   "Fire's e^-v table of the material unit (002 §4.2.2): k -> round(e^(-k/32) "
-                   "2^12), 512 entries built in integers at elaboration")
-
 namespace tmu::tb {
 using D = desc::material_fire;
 
@@ -98,3 +94,5 @@ void MaterialFireBlock::cover(const std::vector<Txn>& items, size_t index, const
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(material_fire, MaterialFireBlock)

@@ -23,12 +23,7 @@ namespace tmu::tb {
 class MaterialFireBlock : public DescribedBlockOf<MaterialFireBlock> {
  public:
   explicit MaterialFireBlock(const BlockOptions& options = {});
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
+  TMU_BLOCK_PIECES;
 
  private:
   // cover() sees every item in order: the indices read so far.

@@ -13,9 +13,6 @@
 #include "rtl_models_mipgen.hpp"
 
 TMU_DESCRIBE_SC(mipgen)
-TMU_REGISTER_BLOCK(mipgen, MipgenBlock,
-                   "TEXRAM mipmap generator (000 §12, Fig. 14): 2x2 box levels from a texel "
-                   "stream, bank writes; a new frame format between frames")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -285,3 +282,5 @@ void MipgenBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&,
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(mipgen, MipgenBlock)

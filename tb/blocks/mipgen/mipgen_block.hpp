@@ -2,7 +2,7 @@
 // of whole frames in, bank-cell writes of every level out (000 §12, Fig. 14;
 // golden/texram/mipgen_stream.hpp, rtl/texram/tmu_mipgen.sv, hls/texram/mipgen_sc.hpp).
 //
-// Channels (mipgen_ports.hpp): cfg is the frame format (log2 width and height 0..10,
+// Channels (mipgen.json): cfg is the frame format (log2 width and height 0..10,
 // interlaced, one or four byte planes and the plane filled), written between frames as a video
 // driver does; in takes one level-0 texel per item in source order, with the texel above it in
 // interlaced field 2 (0 elsewhere); wr gives the writes (level, stored x and y, value, bank,
@@ -40,12 +40,7 @@ class MipgenBlock : public DescribedBlockOf<MipgenBlock> {
   explicit MipgenBlock(const BlockOptions& options = {});
 
   std::vector<Txn> setup_items() const override;
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
+  TMU_BLOCK_PIECES;
   std::string repro_options() const override;
 
  private:

@@ -12,10 +12,6 @@
 #include "rtl_models_noise.hpp"
 
 TMU_DESCRIBE_SC(noise)
-TMU_REGISTER_BLOCK(noise, NoiseBlock,
-                   "Procedural noise unit (002 §4.1): (u, v, w) -> P, xor-table hash, fade "
-                   "table, seven lerps",
-                   "perlin")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -175,3 +171,5 @@ void NoiseBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&,
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(noise, NoiseBlock)

@@ -39,13 +39,8 @@ NoiseTrace trace_noise(int64_t u, int64_t v, int64_t w);
 class NoiseBlock : public DescribedBlockOf<NoiseBlock> {
  public:
   explicit NoiseBlock(const BlockOptions& options = {});
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
+  TMU_BLOCK_PIECES;
   std::unique_ptr<Model> ideal() const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
 
  private:
   // cover() sees every item in order; the fade indices seen so far per axis.

@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "blocks/unit_vectors.hpp"
 #include "formats/formats.hpp"
 #include "harness/described_engines.hpp"
 #include "harness/described_hls.hpp"
@@ -17,10 +18,6 @@
 #include "rtl_models_normal_encoder.hpp"
 
 TMU_DESCRIBE_SC(normal_encoder)
-TMU_REGISTER_BLOCK(normal_encoder, NormalEncoderBlock,
-                   "Normal encoder (001 §4.1, eq. 12-16): (x, y, z) -> (phi, theta) by two seeded "
-                   "Newton-Raphson dividers and angle tables",
-                   "normal-encoder")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -53,23 +50,9 @@ std::string encoder_options(const EncoderConfig& c) {
   return fmt::format("--encoder {},{},{}", c.seed_bits, c.lut_exp, c.lut_mant);
 }
 
-int16_t saturate(double v) {
-  return static_cast<int16_t>(std::clamp(std::lround(v), -32768L, 32767L));
-}
-
-// A random direction (uniform on the sphere), as doubles.
-std::array<double, 3> random_direction(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  while (true) {
-    const std::array<double, 3> v = {g(rng), g(rng), g(rng)};
-    const double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (len > 1e-6) return {v[0] / len, v[1] / len, v[2] / len};
-  }
-}
-
 Txn scaled_item(const std::array<double, 3>& dir, double length) {
-  const double s = length * kOne;
-  return normal_item(saturate(dir[0] * s), saturate(dir[1] * s), saturate(dir[2] * s));
+  const std::array<int16_t, 3> c = unit_comps(dir, length);
+  return normal_item(c[0], c[1], c[2]);
 }
 
 // --- directed items ------------------------------------------------------------------------
@@ -438,3 +421,5 @@ void NormalEncoderBlock::cover(const std::vector<Txn>& items, size_t index, cons
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(normal_encoder, NormalEncoderBlock)

@@ -30,12 +30,7 @@ namespace tmu::tb {
 class NormalEncoderBlock : public DescribedBlockOf<NormalEncoderBlock> {
  public:
   explicit NormalEncoderBlock(const BlockOptions& options = {});
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
+  TMU_BLOCK_PIECES;
   // The verilated widths' key ("" the default, "e1m7"), or "s<S>e<E>m<M>" (no rtl model).
   std::string variant() const override;
   std::string repro_options() const override;

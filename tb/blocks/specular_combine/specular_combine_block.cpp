@@ -11,10 +11,6 @@
 #include "texram/specular_combine.hpp"
 
 TMU_DESCRIBE_SC(specular_combine)
-TMU_REGISTER_BLOCK(specular_combine, SpecularCombineBlock,
-                   "Specular combine (000 §7 eq. 6, §8 eq. 7): per channel min(255, D + E R / "
-                   "255), alpha from D",
-                   "specular-combine")
 
 namespace tmu::tb {
 using texram::mul255;
@@ -270,3 +266,5 @@ void SpecularCombineBlock::cover(const std::vector<Txn>& items, size_t index, co
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(specular_combine, SpecularCombineBlock)

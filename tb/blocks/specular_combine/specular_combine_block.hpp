@@ -4,7 +4,7 @@
 // (000 §7 eq. 6, §8 eq. 7; golden/texram/specular_combine.hpp,
 // rtl/texram/tmu_specular_combine.sv, hls/texram/specular_combine_sc.hpp).
 //
-// Channels (specular_combine_ports.hpp): in (diffuse D, specular E, reflectance R, each
+// Channels (specular_combine.json): in (diffuse D, specular E, reflectance R, each
 // RGBA8888) gives one colour C (RGBA8888) each.
 #pragma once
 
@@ -27,12 +27,7 @@ namespace tmu::tb {
 class SpecularCombineBlock : public DescribedBlockOf<SpecularCombineBlock> {
  public:
   explicit SpecularCombineBlock(const BlockOptions& options = {});
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
+  TMU_BLOCK_PIECES;
 
  private:
   // cover() sees every item in order; the (e, r) pairs seen so far in R, G, B (index e 256 + r).

@@ -18,9 +18,6 @@
 #include "texram/trilinear_ideal.hpp"
 
 TMU_DESCRIBE_SC(trilinear)
-TMU_REGISTER_BLOCK(trilinear, TrilinearBlock,
-                   "TEXRAM trilinear unit (000 §2, §5, §6): 8-bank mipmap, border modes, texel "
-                   "configurations, eq. 5; every memory access compared")
 
 namespace tmu::tb {
 namespace fmts = tmu::formats;
@@ -577,3 +574,5 @@ void TrilinearBlock::cover(const std::vector<Txn>& items, size_t index, const Tx
 }
 
 }  // namespace tmu::tb
+
+TMU_REGISTER_BLOCK(trilinear, TrilinearBlock)

@@ -3,7 +3,7 @@
 // plane, the five texel configurations, the exact blend and eq. 5 (000 §2, §5, §6;
 // golden/texram/trilinear.hpp, rtl/texram/tmu_trilinear.sv, hls/texram/trilinear_sc.hpp).
 //
-// Channels (trilinear_ports.hpp): req (u, v SQ16.8 texels of level 0, lambda SQ6.8, the shade
+// Channels (trilinear.json): req (u, v SQ16.8 texels of level 0, lambda SQ6.8, the shade
 // I_d) gives one rgba each; clut writes an entry; cfg is the unit's configuration and the
 // texture the memory holds (its kind and size are ports; its content and seed are not); the
 // memory answers every access of the eight banks with the page model's timing (texram_memory.hpp),
@@ -54,14 +54,9 @@ class TrilinearBlock : public DescribedBlockOf<TrilinearBlock> {
   TrilinearBlock(const BlockOptions& options, TrilinearEnv env);
 
   std::vector<Txn> setup_items() const override;
-  std::vector<Txn> directed_items() const override;
-  std::vector<Txn> random_items(std::mt19937_64& rng, size_t count) const override;
-  std::unique_ptr<Model> golden() const override;
+  TMU_BLOCK_PIECES;
   std::unique_ptr<Model> ideal() const override;
   std::unique_ptr<Environment> environment(uint64_t seed) const override;
-  std::vector<std::string> coverage_cases() const override;
-  void cover(const std::vector<Txn>& items, size_t index, const Txn& output,
-             Coverage& coverage) const override;
   std::string variant() const override;
   std::string repro_options() const override;
 
