@@ -30,5 +30,6 @@ bad syntax "{$ok," "line 2"
 bad group "{$ok, \"channels\": [{\"use\": \"nowhere\"}]}" "channels[0].use: no group 'nowhere'"
 bad count "{$ok, \"channels\": [{\"channel\": \"in\", \"kind\": \"Sample\", \"fields\": {\"x\": [\"Flag\", 0]}}]}" \
   "channels[0].fields.x"
+bad toplevel "[1, 2]" "(top level): must be an object"
 bad name "{\"block\": \"bar\", \"summary\": \"s\", \"about\": \"a\", \"channels\": []}" "block: 'bar'"
 finish
