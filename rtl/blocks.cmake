@@ -304,8 +304,11 @@ tmu_mutant(footprint_setup unreset FILE footprint/tmu_footprint_setup.sv EXPECT 
 # TEXRAM mipmap generator (000 §12, Fig. 14).
 tmu_block(mipgen)
 tmu_mutant(mipgen round FILE texram/tmu_mipgen.sv
-  FROM "sum + SumW'(2)" TO "sum + SumW'(1)"
-  WHY "the box rule adds a quarter instead of half of 4 before dropping two bits (wrong on every tie)")
+  FROM "(sum + (SumW'(2) << k))" TO "(sum + (SumW'(1) << k))"
+  WHY "the texel's rounding adds a quarter instead of half of 2^(k+2) before dropping k + 2 bits (wrong on every tie)")
+tmu_mutant(mipgen carry FILE texram/tmu_mipgen.sv
+  FROM "KW'(2 * lvl_q + 2) : KW'(CarryBits);" TO "KW'(2 * lvl_q + 1) : KW'(CarryBits);"
+  WHY "the carried values keep one fraction bit less than the rule: sums lose their last bit, some texels from level 2 on are one off")
 tmu_mutant(mipgen above FILE texram/tmu_mipgen.sv
   FROM "pair = PairW'(val_q) + PairW'(above_q);" TO "pair = PairW'(val_q) + PairW'(val_q);"
   WHY "interlaced field 2 pairs each texel with itself instead of the texel above (adder 1402, Fig. 14(a))")

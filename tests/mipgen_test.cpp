@@ -1,7 +1,10 @@
-// The golden mipmap generator (000 §12, Fig. 14): the box rule at its extremes, the pyramid
-// of the degenerate sizes, and the streaming model against build_pyramid for every size.
+// The golden mipmap generator (000 §12, Fig. 14): the rounding rule at its extremes and against
+// the exact box means, the pyramid of the degenerate sizes, and the streaming model against
+// build_pyramid for every size and carry.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <random>
 #include <stdexcept>
@@ -10,6 +13,7 @@
 #include "texram/layout.hpp"
 #include "texram/mipgen_stream.hpp"
 #include "texram/mipmap.hpp"
+#include "texram/mipmap_ideal.hpp"
 
 namespace tmu::texram {
 namespace {
@@ -27,28 +31,79 @@ Level8 make_level(uint32_t w, uint32_t h, std::initializer_list<uint8_t> texels)
   return l;
 }
 
-// ---- box4 ---------------------------------------------------------------------------------
+// ---- the rounding rule -------------------------------------------------------------------
 
-TEST(MipgenTest, Box4AtTheExtremes) {
-  EXPECT_EQ(box4(0, 0, 0, 0), 0);
-  EXPECT_EQ(box4(255, 255, 255, 255), 255);  // sum 1020: + 2 stays below 1024
-  EXPECT_EQ(box4(255, 255, 255, 254), 255);  // 1019 + 2 = 1021 -> 255
-  EXPECT_EQ(box4(255, 255, 254, 254), 255);  // 1018: a tie, rounded up
-  EXPECT_EQ(box4(255, 254, 254, 254), 254);  // 1017 -> 254
-  EXPECT_EQ(box4(0, 0, 0, 1), 0);            // 1: rounds down
-  EXPECT_EQ(box4(255, 0, 255, 0), 128);      // 510 = 4 * 127 + 2: a tie, up to 128
+TEST(MipgenTest, BoxTexelRoundsOnceHalfUp) {
+  // Four 8-bit values (k = 0): the old box4 rule at its extremes.
+  EXPECT_EQ(box_texel(0, 0), 0);
+  EXPECT_EQ(box_texel(1020, 0), 255);  // all 255: + 2 stays below 1024
+  EXPECT_EQ(box_texel(1019, 0), 255);
+  EXPECT_EQ(box_texel(1018, 0), 255);  // a tie, rounded up
+  EXPECT_EQ(box_texel(1017, 0), 254);
+  EXPECT_EQ(box_texel(510, 0), 128);  // 4 * 127 + 2: a tie, up to 128
+  // Every sum 4u + r of values with k fraction bits (scaled by 2^k): r < 2^(k+1) rounds down,
+  // the rest up, ties (r = 2^(k+1)) included.
+  for (int k : {0, 2, 7, kExactCarry}) {
+    const uint32_t one = 4u << k;  // the box sum of a mean of 1
+    for (uint32_t u : {0u, 1u, 127u, 254u}) {
+      EXPECT_EQ(box_texel(u * one + one / 2 - 1, k), u) << k;
+      EXPECT_EQ(box_texel(u * one + one / 2, k), u + 1) << k;
+      EXPECT_EQ(box_texel(u * one + one - 1, k), u + 1) << k;
+    }
+  }
 }
 
-TEST(MipgenTest, Box4RoundsTiesUp) {
-  // Every sum 4k + 2 is exactly between k and k + 1 and gives k + 1; 4k + 1 gives k and
-  // 4k + 3 gives k + 1.
-  for (uint32_t k = 0; k < 255; ++k) {
-    EXPECT_EQ(round_box_sum(4 * k + 1), k);
-    EXPECT_EQ(round_box_sum(4 * k + 2), k + 1);
-    EXPECT_EQ(round_box_sum(4 * k + 3), k + 1);
+TEST(MipgenTest, BoxCarryKeepsOrRoundsTheFraction) {
+  EXPECT_EQ(box_carry(1019, 0, 2), 1019u);  // two more bits: exact
+  EXPECT_EQ(box_carry(1019, 0, 1), 510u);   // 1019 / 2 = 509.5, a tie: up
+  EXPECT_EQ(box_carry(1017, 0, 0), 254u);   // the rounded texel
+  EXPECT_EQ(box_carry(1018, 0, 0), 255u);
+  EXPECT_EQ(carried_bits(0, kExactCarry), 0);
+  EXPECT_EQ(carried_bits(10, kExactCarry), 20);
+  EXPECT_EQ(carried_bits(5, 3), 3);
+}
+
+// The ideal pyramid on its own: the box means of a 4 x 2 level 0, the last level repeating its
+// row (which leaves a mean unchanged).
+TEST(MipgenTest, IdealPyramidIsTheBoxMeans) {
+  const std::vector<LevelD> p = ideal_pyramid(make_level(4, 2,
+                                                         {0, 4, 8, 9,  //
+                                                          2, 6, 9, 9}));
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(p[1].texels, (std::vector<double>{3.0, 8.75}));
+  EXPECT_EQ(p[2].texels, (std::vector<double>{5.875}));
+}
+
+// Every level of the default (exact) rule is within 0.5 of the ideal (the exact box mean of
+// level 0: one rounding, half up), and carry 0 is the rule of rounding every level from the
+// rounded level below; both for shapes of 2^0..2^10 per side, random texels.
+TEST(MipgenTest, ExactRuleIsWithinHalfOfTheBoxMeanAndCarryZeroRoundsEveryLevel) {
+  for (int lw = 0; lw <= formats::kMaxMipLog2; lw += 2) {
+    for (int lh = 0; lh <= formats::kMaxMipLog2; lh += 3) {
+      SCOPED_TRACE(::testing::Message() << (1u << lw) << " x " << (1u << lh));
+      const Level8 level0 = random_level(1u << lw, 1u << lh, 77 + 16 * lw + lh);
+      const std::vector<LevelError> error =
+          pyramid_error(build_pyramid(level0), ideal_pyramid(level0));
+      for (size_t l = 0; l < error.size(); ++l)
+        EXPECT_LE(error[l].max_abs, 0.5) << "level " << l + 1;
+      const Pyramid8 rounded = build_pyramid(level0, 0);
+      for (size_t l = 1; l < rounded.size(); ++l) {
+        const Level8& below = rounded[l - 1];
+        for (uint32_t y = 0; y < rounded[l].height; ++y) {
+          for (uint32_t x = 0; x < rounded[l].width; ++x) {
+            // The box of the four rounded texels below (a one-texel side taken twice).
+            const uint32_t x0 = std::min(2 * x, below.width - 1),
+                           x1 = std::min(2 * x + 1, below.width - 1);
+            const uint32_t y0 = std::min(2 * y, below.height - 1),
+                           y1 = std::min(2 * y + 1, below.height - 1);
+            const uint32_t box =
+                below.at(x0, y0) + below.at(x1, y0) + below.at(x0, y1) + below.at(x1, y1);
+            ASSERT_EQ(rounded[l].at(x, y), (box + 2) >> 2) << "level " << l;
+          }
+        }
+      }
+    }
   }
-  EXPECT_EQ(box4(1, 1, 0, 0), 1);  // 2/4 = 0.5 -> 1
-  EXPECT_EQ(box4(1, 0, 0, 0), 0);  // 0.25 -> 0
 }
 
 // ---- build_pyramid ------------------------------------------------------------------------
@@ -60,11 +115,12 @@ TEST(MipgenTest, PyramidOfOneTexelIsItself) {
 }
 
 TEST(MipgenTest, PyramidOfASingleLineRepeatsTheRow) {
-  // 4 x 1: level 1 = box4(a, b, a, b) = (2a + 2b + 2) >> 2 = (a + b + 1) >> 1.
+  // 4 x 1: a level-1 texel is the mean of its pair, (a + b) / 2 rounded half up; level 2 the
+  // mean of all four, 266 / 4 = 66.5 -> 67.
   const Pyramid8 p = build_pyramid(make_level(4, 1, {0, 1, 10, 255}));
   ASSERT_EQ(p.size(), 3u);
-  EXPECT_EQ(p[1], make_level(2, 1, {1, 133}));  // (0+1+1)>>1 = 1, (10+255+1)>>1 = 133
-  EXPECT_EQ(p[2], make_level(1, 1, {67}));      // (1+133+1)>>1 = 67
+  EXPECT_EQ(p[1], make_level(2, 1, {1, 133}));  // 0.5 -> 1, 132.5 -> 133
+  EXPECT_EQ(p[2], make_level(1, 1, {67}));
 }
 
 TEST(MipgenTest, PyramidOfASingleColumnRepeatsTheColumn) {
@@ -75,18 +131,19 @@ TEST(MipgenTest, PyramidOfASingleColumnRepeatsTheColumn) {
 }
 
 TEST(MipgenTest, PyramidOfANonSquareTexture) {
-  // 4 x 2 -> 2 x 1 -> 1 x 1; the last step repeats the row.
+  // 4 x 2 -> 2 x 1 -> 1 x 1; the last step repeats the row: the mean of all eight.
   const Pyramid8 p = build_pyramid(make_level(4, 2,
                                               {0, 4, 8, 9,  //
                                                2, 6, 9, 9}));
   ASSERT_EQ(p.size(), 3u);
-  EXPECT_EQ(p[1], make_level(2, 1, {3, 9}));  // (12+2)>>2 = 3, (35+2)>>2 = 9
-  EXPECT_EQ(p[2], make_level(1, 1, {6}));     // (2*3 + 2*9 + 2)>>2 = 6
+  EXPECT_EQ(p[1], make_level(2, 1, {3, 9}));  // 12 / 4 = 3, 35 / 4 = 8.75 -> 9
+  EXPECT_EQ(p[2], make_level(1, 1, {6}));     // 47 / 8 = 5.875 -> 6
 }
 
 TEST(MipgenTest, PyramidRejectsNonPowerOfTwoSides) {
   EXPECT_THROW(build_pyramid(Level8(3, 4)), std::invalid_argument);
   EXPECT_THROW(build_pyramid(Level8(2048, 1)), std::invalid_argument);
+  EXPECT_THROW(build_pyramid(Level8(2, 2), kExactCarry + 1), std::invalid_argument);
 }
 
 // ---- the streaming model ------------------------------------------------------------------
@@ -94,19 +151,29 @@ TEST(MipgenTest, PyramidRejectsNonPowerOfTwoSides) {
 // One frame of `level0` through the stream: the writes read back through Geometry::cell
 // must be build_pyramid, every cell of the layout written exactly once, and every write in
 // the documented order.
-void expect_stream_is_pyramid(const MipgenConfig& cfg, const Level8& level0) {
+void expect_stream_is_pyramid(const MipgenConfig& cfg, const Level8& level0,
+                              int carry = kExactCarry) {
   SCOPED_TRACE(::testing::Message() << (1u << cfg.log2_w) << " x " << (1u << cfg.log2_h)
                                     << (cfg.interlaced ? " interlaced" : "") << " plane "
-                                    << cfg.plane << "/" << cfg.planes);
-  const std::vector<CellWrite> writes = mipgen_frame(cfg, level0);
+                                    << cfg.plane << "/" << cfg.planes << " carry " << carry);
+  const std::vector<CellWrite> writes = mipgen_frame(cfg, level0, carry);
   const Geometry g(cfg.log2_w, cfg.log2_h, cfg.planes);
   BankMemory mem(g);
   for (const CellWrite& w : writes) {
     ASSERT_EQ(w.cell, g.cell(w.level, w.x, w.y, cfg.plane));
     mem.write(w);
   }
-  EXPECT_EQ(mem.read_pyramid(cfg.plane), build_pyramid(level0));
+  EXPECT_EQ(mem.read_pyramid(cfg.plane), build_pyramid(level0, carry));
   EXPECT_EQ(mem.cells_not_written_once(cfg.plane), 0u);
+}
+
+TEST(MipgenTest, StreamEqualsPyramidForEveryCarry) {
+  for (int carry = 0; carry <= kExactCarry; ++carry) {
+    for (bool interlaced : {false, true}) {
+      expect_stream_is_pyramid({7, 6, interlaced, 1, 0}, random_level(128, 64, 5), carry);
+      expect_stream_is_pyramid({0, 5, interlaced, 1, 0}, random_level(1, 32, 6), carry);
+    }
+  }
 }
 
 TEST(MipgenTest, StreamEqualsPyramidForEverySizeBothModes) {
@@ -197,7 +264,7 @@ TEST(MipgenTest, InterlacedLevel1UsesTheLineAbove) {
   s.step({30, 99}, w);  // field 2, a wrong `above` for (0, 1)
   s.step({40, 20}, w);
   ASSERT_EQ(w.back().level, 1);
-  EXPECT_EQ(w.back().value, round_box_sum(99 + 20 + 30 + 40));
+  EXPECT_EQ(w.back().value, box_texel(99 + 20 + 30 + 40, 0));
   EXPECT_NE(w.back().value, build_pyramid(level0)[1].at(0, 0));
   EXPECT_TRUE(s.frame_start());
 }

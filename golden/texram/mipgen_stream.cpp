@@ -27,10 +27,15 @@ const MipgenConfig& checked(const MipgenConfig& c) {
 
 }  // namespace
 
-MipgenStream::MipgenStream(const MipgenConfig& config)
+MipgenStream::MipgenStream(const MipgenConfig& config, int carry)
     : config_(checked(config)),
+      carry_(carry),
       geometry_(config.log2_w, config.log2_h, config.planes),
-      interlaced_(config.interlaced && config.log2_h > 0) {}
+      interlaced_(config.interlaced && config.log2_h > 0) {
+  if (carry < 0 || carry > kExactCarry) {
+    throw std::invalid_argument("MipgenStream: carry must be 0.." + std::to_string(kExactCarry));
+  }
+}
 
 const MipgenStream::Stage& MipgenStream::stage_at(int level) const {
   if (level < 0 || level + 1 >= geometry_.levels()) {
@@ -120,12 +125,13 @@ void MipgenStream::step(const MipgenInput& in, std::vector<CellWrite>& out) {
   bool more =
       interlaced_ ? interlaced_level1_step(x, y, in, sum) : stage_step(0, x, y, in.texel, sum);
   for (int level = 1; more; ++level) {
-    last_sums_.push_back(sum);
-    const uint8_t value = round_box_sum(sum);
+    const int k = carried_bits(level - 1, carry_);  // of the four values summed
+    last_sums_.push_back({sum, k});
     x >>= 1;
     y >>= 1;
-    emit(level, x, y, value, out);
-    more = level < top && stage_step(level, x, y, value, sum);
+    emit(level, x, y, box_texel(sum, k), out);
+    const uint32_t carried = box_carry(sum, k, carried_bits(level, carry_));
+    more = level < top && stage_step(level, x, y, carried, sum);
   }
 }
 
@@ -146,8 +152,8 @@ std::vector<MipgenInput> mipgen_source(const Level8& level0, bool interlaced) {
   return items;
 }
 
-std::vector<CellWrite> mipgen_frame(const MipgenConfig& config, const Level8& level0) {
-  MipgenStream stream(config);
+std::vector<CellWrite> mipgen_frame(const MipgenConfig& config, const Level8& level0, int carry) {
+  MipgenStream stream(config, carry);
   if (level0.width != stream.width() || level0.height != stream.height() ||
       level0.texels.size() != stream.items_per_frame()) {
     throw std::invalid_argument("mipgen_frame: level 0 is not the configured size");

@@ -16,12 +16,13 @@
 // row-major order of the stored coordinates: (0,y) (1,y) for a one-texel-wide level, (x,0)
 // (x,1) for a one-texel-high one, (0,0) (1,0) (0,1) (1,1) for the 1 x 1 top level.
 //
-// Arithmetic (Fig. 14), per stage l (level l in, level l + 1 out), sums exact, one rounding
-// (the box4 rule, (sum + 2) >> 2) when a level-(l+1) texel is complete:
-// - non-interlaced, and every level above 0: horizontal pairs first (an even column waits in
-//   register 1404), then vertical pairs: the pair sums of an even line wait in the line FIFO
-//   1408 (half a line of level l deep) for the odd line below. A one-texel-wide (-high) level
-//   repeats its column (row): the pair sum is twice the texel (twice the pair sum).
+// Arithmetic (Fig. 14), per stage l (level l in, level l + 1 out), on the carried values of
+// mipmap.hpp's rounding rule: sums exact; when a level-(l+1) texel is complete its texel is
+// box_texel(sum) and its carried value, which goes on to stage l + 1, box_carry(sum):
+// - non-interlaced, and every level above 0: horizontal pairs first (an even column's carried
+//   value waits in register 1404), then vertical pairs: the pair sums of an even line wait in
+//   the line FIFO 1408 (half a line of level l deep) for the odd line below. A one-texel-wide
+//   (-high) level repeats its column (row): the pair sum is twice the texel (twice the pair sum).
 // - interlaced level 0 -> 1 (Fig. 14(a)): in field 2 adder 1402 adds texel + above (a
 //   vertical pair); an even column's sum waits in FIFO 1408, used as a one-entry register; the
 //   odd column completes the level-1 texel. Field 1 is only written. Level 1 then comes out in
@@ -64,14 +65,18 @@ struct CellWrite {
   friend bool operator==(const CellWrite&, const CellWrite&) = default;
 };
 
-// The value of a complete 2 x 2 box from its exact sum: the box4 rule of mipmap.hpp.
-constexpr uint8_t round_box_sum(uint32_t sum) { return box4(sum, 0, 0, 0); }
+// A complete 2 x 2 box: its sum, of four carried values with `frac_bits` fraction bits.
+struct BoxSum {
+  uint32_t sum = 0;
+  int frac_bits = 0;
+};
 
 class MipgenStream {
  public:
   // Throws std::invalid_argument for sizes beyond 0..MaxMipLog2, planes other than 1 or 4,
-  // or a plane outside 0..planes-1.
-  explicit MipgenStream(const MipgenConfig& config);
+  // a plane outside 0..planes-1, or a carry outside 0..kExactCarry (mipmap.hpp's rule: a
+  // design parameter of the unit, not a port).
+  explicit MipgenStream(const MipgenConfig& config, int carry = kExactCarry);
 
   const MipgenConfig& config() const { return config_; }
   const Geometry& geometry() const { return geometry_; }
@@ -91,8 +96,8 @@ class MipgenStream {
   // Consumes the next item; appends its writes, in output order, to `out`.
   void step(const MipgenInput& in, std::vector<CellWrite>& out);
 
-  // The exact box sums (0..1020) of the texels the last step() completed, ascending level.
-  const std::vector<uint32_t>& last_box_sums() const { return last_sums_; }
+  // The box sums of the texels the last step() completed, ascending level.
+  const std::vector<BoxSum>& last_box_sums() const { return last_sums_; }
 
   // The line FIFO of stage `level` (level in, level + 1 out): its depth, half a line of
   // `level` (at least one entry), and the most pair sums it has held at once so far.
@@ -110,24 +115,26 @@ class MipgenStream {
   const Stage& stage_at(int level) const;
   void advance();
   void emit(int level, uint32_t x, uint32_t y, uint8_t value, std::vector<CellWrite>& out) const;
-  // The exact sum of the level-(level+1) texel that texel (x, y) = v of `level` completes, if
-  // it completes one.
+  // The box sum of the level-(level+1) texel that texel (x, y) of `level`, carried value v,
+  // completes, if it completes one.
   bool stage_step(int level, uint32_t x, uint32_t y, uint32_t v, uint32_t& sum);
   bool interlaced_level1_step(uint32_t x, uint32_t y, const MipgenInput& in, uint32_t& sum);
 
   MipgenConfig config_;
+  int carry_;
   Geometry geometry_;
   bool interlaced_;
   uint32_t x_ = 0, y_ = 0;
   std::array<Stage, kMaxLevels> stages_{};
-  std::vector<uint32_t> last_sums_;
+  std::vector<BoxSum> last_sums_;
 };
 
 // One frame's items in source order; `above` is filled in for field-2 items (0 elsewhere).
 std::vector<MipgenInput> mipgen_source(const Level8& level0, bool interlaced);
 
 // Every write of one frame of `level0` (its size must be config's).
-std::vector<CellWrite> mipgen_frame(const MipgenConfig& config, const Level8& level0);
+std::vector<CellWrite> mipgen_frame(const MipgenConfig& config, const Level8& level0,
+                                    int carry = kExactCarry);
 
 // The eight banks as the writes leave them, read back through Geometry::cell.
 class BankMemory {

@@ -14,16 +14,20 @@
 /// completes, ascending level. A texel of a level less than 2 texels wide (high) is written
 /// to each of its replica cells, row-major in stored coordinates. One write per clock.
 ///
-/// Datapath, one texel at a time (the texel being written, lvl_q/x_q/y_q/val_q): with its last
-/// write the texel enters the stage of its level, which either keeps a partial sum or
-/// completes a texel of the next level; that texel is then written the same way, and so on.
-/// Stage l (level l in, level l + 1 out) has
-///   - hold_q[l]: register 1404, an even column waiting for its odd neighbour (interlaced
-///     level 0: FIFO 1408 as a one-entry register holding texel + above);
+/// Datapath, one texel at a time (the texel being written, lvl_q/x_q/y_q, its 8-bit value val_q
+/// and its carried value car_q): with its last write the texel enters the stage of its level,
+/// which either keeps a partial sum or completes a texel of the next level; that texel is then
+/// written the same way, and so on. Stage l (level l in, level l + 1 out) has
+///   - a hold register: 1404, an even column's carried value waiting for its odd neighbour
+///     (interlaced level 0: FIFO 1408 as a one-entry register holding texel + above);
 ///   - a line FIFO (tmu_mip_line_fifo) of 2^(MaxLog2-1-l) pair sums, half a line of level l
 ///     (FIFO 1408 as a line buffer): the even line's pair sums wait for the odd line below.
-/// Sums are exact (pair sums 9 bits, box sums 10 bits) and rounded once, (sum + 2) >> 2. A
-/// one-texel-wide (-high) level repeats its column (row): the pair is twice the texel.
+/// The rounding rule is golden/texram/mipmap.hpp's: level l's carried values have
+/// K(l) = min(2 l, CarryBits) fraction bits (stage l's registers ChW + 1 + K(l) bits), sums are
+/// exact, the next level's texel is the box sum rounded half up once, (sum + 2^(K+1)) >> (K+2),
+/// and its carried value the sum rounded to K(l + 1) fraction bits. The default CarryBits keeps
+/// every sum exact (every level within 0.5 of level 0's box mean); CarryBits = 0 rounds every
+/// level. A one-texel-wide (-high) level repeats its column (row): the pair is twice the texel.
 ///
 /// Timing: an input is accepted while the generator is idle, or in the cycle its last
 /// pending write leaves (so in_ready_o depends on wr_ready_i); a texel's writes leave one per
@@ -41,7 +45,10 @@
 /// replica cells (1, 0, 0), (1, 1, 0), (1, 0, 1), (1, 1, 1): 8 writes in 8 cycles.
 module tmu_mipgen #(
   /// Largest texture side 2^MaxLog2 the line FIFOs are sized for (1..MaxMipLog2).
-  parameter int unsigned MaxLog2 = tmu_pkg::MaxMipLog2
+  parameter int unsigned MaxLog2 = tmu_pkg::MaxMipLog2,
+  /// Fraction bits the levels' carried values keep at most (0..2 MaxMipLog2; mipmap.hpp's
+  /// carry): 2 MaxMipLog2 keeps every sum exact, 0 rounds every level.
+  parameter int unsigned CarryBits = 2 * tmu_pkg::MaxMipLog2
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
@@ -73,16 +80,23 @@ module tmu_mipgen #(
 );
 
   localparam int unsigned ChW    = tmu_pkg::ChannelW;
-  localparam int unsigned PairW  = ChW + 1;  // a sum of two texels, 0..510
-  localparam int unsigned SumW   = ChW + 2;  // a box sum, 0..1020
+  localparam int unsigned Stages = MaxLog2;  // stage l: level l in, level l + 1 out
+  // Fraction bits of the values entering the last stage, the most any stage holds.
+  localparam int unsigned KMax   = (2 * (Stages - 1) < CarryBits) ? 2 * (Stages - 1) : CarryBits;
+  localparam int unsigned CarW   = ChW + KMax;      // a carried value
+  localparam int unsigned PairW  = ChW + 1 + KMax;  // a sum of two
+  localparam int unsigned SumW   = ChW + 2 + KMax;  // a box sum
+  localparam int unsigned KW     = $clog2(2 * tmu_pkg::MaxMipLog2 + 3);  // 0 .. K + 2
   localparam int unsigned CoordW = tmu_pkg::MipCoordW;
   localparam int unsigned LevelW = tmu_pkg::MipLevelW;
-  localparam int unsigned Stages = MaxLog2;  // stage l: level l in, level l + 1 out
   localparam int unsigned StageW = (Stages > 1) ? $clog2(Stages) : 1;
 
   if (MaxLog2 < 1 || MaxLog2 > tmu_pkg::MaxMipLog2 || CoordW < MaxLog2 ||
       (1 << LevelW) <= MaxLog2) begin : gen_check
     $error("tmu_mipgen: MaxLog2 must be 1..MaxMipLog2");
+  end
+  if (CarryBits > 2 * tmu_pkg::MaxMipLog2) begin : gen_check_carry
+    $error("tmu_mipgen: CarryBits must be 0..2 MaxMipLog2");
   end
 
   // ---- Source position: the level-0 texel of the next input item ------------------------------
@@ -102,6 +116,7 @@ module tmu_mipgen #(
   tmu_pkg::mip_level_t lvl_q, lvl_d;
   tmu_pkg::mip_coord_t x_q, x_d, y_q, y_d;  // coordinates within its level
   tmu_pkg::channel_t   val_q, val_d;
+  logic [CarW-1:0]     car_q, car_d;        // its carried value, K(lvl_q) fraction bits
   tmu_pkg::channel_t   above_q, above_d;    // level 0, interlaced field 2: the texel above
   logic [1:0]          rep_q, rep_d;        // replica being written: {y, x}
 
@@ -115,17 +130,15 @@ module tmu_mipgen #(
 
   // ---- Stage of the texel's level: partial sums, and the next level's texel ------------------
 
-  logic [PairW-1:0]        hold_q [Stages];     // register 1404 of each stage
-  logic [Stages*PairW-1:0] line_rdata;          // each stage's line FIFO, at column pair x_q >> 1
+  logic [Stages*PairW-1:0] hold_rdata;   // each stage's register 1404, zero-extended
+  logic [Stages*PairW-1:0] line_rdata;   // each stage's line FIFO at column pair x_q >> 1, too
   logic [StageW-1:0]       stage;
   logic [PairW-1:0]        hold_rd, line_rd, hold_wd, pair;
   logic [SumW-1:0]         sum;
-  logic [SumW-1:0]         sum_rounded;   // at most 1020 + 2: no carry out
-  logic                    unused_round_bits;
   logic                    hold_we, line_we, produce;
 
   assign stage   = top ? '0 : StageW'(lvl_q);  // a level below the top has a stage
-  assign hold_rd = hold_q[stage];
+  assign hold_rd = hold_rdata[stage*PairW +: PairW];
   assign line_rd = line_rdata[stage*PairW +: PairW];
 
   always_comb begin
@@ -156,9 +169,9 @@ module tmu_mipgen #(
         // Columns pair first (register 1404, adder 1402), then lines (line FIFO 1408, 1410).
         if (wide && !x_q[0]) begin
           hold_we = 1'b1;
-          hold_wd = PairW'(val_q);
+          hold_wd = PairW'(car_q);
         end else begin
-          pair = wide ? PairW'(hold_rd[ChW-1:0]) + PairW'(val_q) : {val_q, 1'b0};
+          pair = wide ? PairW'(hold_rd[CarW-1:0]) + PairW'(car_q) : {1'b0, car_q} << 1;
           if (!high) begin
             produce = 1'b1;
             sum     = {pair, 1'b0};
@@ -173,9 +186,23 @@ module tmu_mipgen #(
     end
   end
 
-  // The box4 rule: the exact sum plus half of 4, the two low bits dropped.
-  assign sum_rounded       = sum + SumW'(2);
-  assign unused_round_bits = ^sum_rounded[1:0];
+  // The rounding rule: the level's fraction bits k, the next level's k_next; the texel is the
+  // sum plus half of 2^(k+2) with k + 2 bits dropped, the carried value the sum with
+  // k + 2 - k_next (0..2) bits dropped, rounded half up the same way.
+  logic [KW-1:0]   k, k_next, drop;
+  logic [SumW-1:0] texel_sum, carry_sum;
+
+  // min(2 l, CarryBits) and min(2 l + 2, CarryBits) (signed: no constant compare at 0).
+  assign k      = (2 * int'(lvl_q) < int'(CarryBits)) ? KW'(2 * lvl_q) : KW'(CarryBits);
+  assign k_next = (2 * int'(lvl_q) + 2 < int'(CarryBits)) ? KW'(2 * lvl_q + 2) : KW'(CarryBits);
+  assign drop   = k + KW'(2) - k_next;
+  // At most 255 2^(k+2) + 2^(k+1) < 2^SumW: no carry out.
+  assign texel_sum = (sum + (SumW'(2) << k)) >> (k + KW'(2));
+  assign carry_sum = (drop == '0) ? sum : (sum + (SumW'(1) << (drop - KW'(1)))) >> drop;
+  // The texel fits 8 bits and the carried value CarW bits (a level Stages top's does not, and
+  // is never read).
+  logic unused_sum_bits;
+  assign unused_sum_bits = ^{texel_sum[SumW-1:ChW], carry_sum[SumW-1:CarW]};
 
   // ---- Control ---------------------------------------------------------------------------------
 
@@ -192,6 +219,7 @@ module tmu_mipgen #(
     x_d        = x_q;
     y_d        = y_q;
     val_d      = val_q;
+    car_d      = car_q;
     above_d    = above_q;
     rep_d      = rep_q;
     src_x_d    = src_x_q;
@@ -206,7 +234,9 @@ module tmu_mipgen #(
         lvl_d = lvl_q + LevelW'(1);
         x_d   = x_q >> 1;
         y_d   = y_q >> 1;
-        val_d = sum_rounded[SumW-1:2];
+        val_d = texel_sum[ChW-1:0];
+        // Level Stages is a top: its carried value, which may not fit, is never read.
+        car_d = carry_sum[CarW-1:0];
         rep_d = '0;
       end else begin
         busy_d = 1'b0;
@@ -218,6 +248,7 @@ module tmu_mipgen #(
       x_d     = src_x_q;
       y_d     = src_y_q;
       val_d   = in_texel_i;
+      car_d   = CarW'(in_texel_i);
       above_d = in_above_i;
       rep_d   = '0;
       // Source order: along the line; then the next line, or of the same field; a field's
@@ -254,28 +285,36 @@ module tmu_mipgen #(
     x_q     <= x_d;
     y_q     <= y_d;
     val_q   <= val_d;
+    car_q   <= car_d;
     above_q <= above_d;
     rep_q   <= rep_d;
-  end
-
-  // Registers 1404: no reset, every frame writes an even column before its odd one reads it.
-  always_ff @(posedge clk_i) begin
-    if (done && hold_we) hold_q[stage] <= hold_wd;
   end
 
   for (genvar l = 0; l < Stages; l++) begin : gen_stage
     localparam int unsigned Depth = 1 << (MaxLog2 - 1 - l);  // half a line of level l
     localparam int unsigned FifoAddrW = (Depth > 1) ? $clog2(Depth) : 1;
+    // A pair of level l's carried values (level 0 interlaced: texel + above, 9 bits).
+    localparam int unsigned W = ChW + 1 + ((2 * l < CarryBits) ? 2 * l : CarryBits);
+    logic [W-1:0] line_entry;
+    logic [W-1:0] hold_q;
+
+    // Register 1404: no reset, every frame writes an even column before its odd one reads it.
+    always_ff @(posedge clk_i) begin
+      if (done && hold_we && stage == StageW'(l)) hold_q <= hold_wd[W-1:0];
+    end
+    assign hold_rdata[l*PairW +: PairW] = PairW'(hold_q);
+
     tmu_mip_line_fifo #(
       .Depth (Depth),
-      .Width (PairW)
+      .Width (W)
     ) u_line_fifo (
       .clk_i   (clk_i),
       .we_i    (done && line_we && stage == StageW'(l)),
       .addr_i  (x_q[FifoAddrW:1]),
-      .wdata_i (pair),
-      .rdata_o (line_rdata[l*PairW +: PairW])
+      .wdata_i (pair[W-1:0]),
+      .rdata_o (line_entry)
     );
+    assign line_rdata[l*PairW +: PairW] = PairW'(line_entry);
   end
 
   // ---- Writes --------------------------------------------------------------------------------

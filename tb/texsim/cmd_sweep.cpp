@@ -26,6 +26,7 @@
 #include "texsim/sweep_deflection.hpp"
 #include "texsim/sweep_footprint.hpp"
 #include "texsim/sweep_footprint_setup.hpp"
+#include "texsim/sweep_mipgen.hpp"
 #include "texsim/sweep_perlin.hpp"
 #include "texsim/sweep_support.hpp"
 
@@ -192,6 +193,9 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       "PSNR of each\n"
       "procedural material of a scene, fade-table bits, speed, cells; both fractal "
       "configurations (docs/perlin.md).\n"
+      "mipgen: the mipmap generator's rounding (000 §12) per carry: each level's error against "
+      "the exact box\n"
+      "means of level 0, the carried bits in the line FIFOs, cells (docs/texram.md).\n"
       "all: every sweep above, the model-level table (texsim levels) and the default scene at "
       "every engine, with\n"
       "a plot per block (scripts/plot_accuracy.py): writes DIR/accuracy.md and DIR/accuracy/ "
@@ -199,16 +203,17 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
   auto args = std::make_shared<SweepArgs>();
   auto fp = std::make_shared<FootprintSweepArgs>();
   cmd->add_option("block", args->block,
-                  "trilinear | footprint | footprint-setup | deflection | perlin | all")
+                  "trilinear | footprint | footprint-setup | deflection | perlin | mipgen | all")
       ->required()
       ->check(CLI::IsMember(
-          {"trilinear", "footprint", "footprint-setup", "deflection", "perlin", "all"}));
+          {"trilinear", "footprint", "footprint-setup", "deflection", "perlin", "mipgen", "all"}));
   cmd->add_option("--settings", args->settings,
                   "trilinear: width settings S,W,L separated by ';' (footprint-setup: D,T,F; "
                   "default " +
                       FootprintSetupSweepArgs{}.settings + "; deflection: A,E,M,W, default " +
                       DeflectionSweepArgs{}.settings + "; perlin: F,S,B,X, default " +
-                      PerlinSweepArgs{}.settings + ")")
+                      PerlinSweepArgs{}.settings + "; mipgen: carries 0..20, default " +
+                      MipgenSweepArgs{}.settings + ")")
       ->capture_default_str();
   cmd->add_option("--requests", args->requests,
                   "trilinear, footprint-setup: random requests for the error statistics "
@@ -233,7 +238,15 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
                   "per-pixel supersampled footprint)")
       ->check(CLI::Range(1, 16));
   cmd->add_flag("--quick", fp->quick, "footprint: half the frame and k = 4 (for tests)");
-  cmd->callback([args, fp, cmd] {
+  auto image = std::make_shared<std::string>();
+  cmd->add_option("--image", *image,
+                  "mipgen: the image whose planes are filtered (sides powers of two up to 1024; "
+                  "default the photo-like field, 512 x 512)")
+      ->check(CLI::ExistingFile);
+  cmd->callback([args, fp, image, cmd] {
+    if (args->block != "mipgen" && !image->empty()) {
+      throw CLI::ValidationError("--image", "only for `sweep mipgen`");
+    }
     load_oiio_plugin();  // before any sweep's clock starts
     if (args->block == "all") {
       for (const char* o : {"--settings", "--requests", "--k", "--quick", "--markdown"}) {
@@ -282,6 +295,16 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       a.out_dir = args->out_dir;
       a.markdown = args->markdown;
       sweep_deflection(a);
+    } else if (args->block == "mipgen") {
+      for (const char* o : {"--scene", "--k", "--quick", "--requests", "--out"}) {
+        if (cmd->count(o) > 0) throw CLI::ValidationError(o, "not for `sweep mipgen`");
+      }
+      MipgenSweepArgs a;
+      if (cmd->count("--settings") > 0) a.settings = args->settings;
+      a.image = *image;
+      a.synth = args->synth;
+      a.markdown = args->markdown;
+      sweep_mipgen(a);
     } else if (args->block == "footprint") {
       for (const char* o : {"--settings", "--requests", "--no-synth"}) {
         if (cmd->count(o) > 0) throw CLI::ValidationError(o, "only for `sweep trilinear`");

@@ -110,8 +110,8 @@ TEST(MipgenTest, RtlWritesReadBackAsThePyramidAt1024x1024) {
   EXPECT_EQ(mem.cells_not_written_once(3), 0u);
 }
 
-// The directed tie frame: every box sum of every level is 2 mod 4, and its pyramid is the
-// one it was built from (128 at the top).
+// The directed tie frame: every box of every level is a rounding tie (its mean halfway), and
+// the top is 127.5 rounded up.
 TEST(MipgenTest, TieFrameRoundsEveryBoxHalfUp) {
   for (const auto& [lw, lh] :
        {std::pair{10, 10}, std::pair{10, 0}, std::pair{0, 9}, std::pair{4, 7}, std::pair{1, 1}}) {
@@ -121,9 +121,9 @@ TEST(MipgenTest, TieFrameRoundsEveryBoxHalfUp) {
     size_t boxes = 0, ties = 0;
     for (const texram::MipgenInput& in : texram::mipgen_source(frame, false)) {
       s.step(in, w);
-      for (uint32_t sum : s.last_box_sums()) {
+      for (const texram::BoxSum& b : s.last_box_sums()) {
         ++boxes;
-        ties += sum % 4 == 2;
+        ties += b.sum % (4u << b.frac_bits) == (2u << b.frac_bits);
       }
     }
     EXPECT_EQ(ties, boxes) << lw << " x " << lh;

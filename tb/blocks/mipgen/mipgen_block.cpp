@@ -55,7 +55,7 @@ texram::Level8 random_frame(uint32_t w, uint32_t h, std::mt19937_64& rng) {
   return l;
 }
 
-// The directed formats and their frames: 0 zeros (box sums 0), f 255 (sums 1020), a
+// The directed formats and their frames: 0 zeros (box sums 0), f 255 (the largest sums), a
 // alternating 0 / 255, t rounding ties, r random.
 struct DirectedFormat {
   texram::MipgenConfig format;
@@ -81,9 +81,9 @@ const DirectedFormat kDirected[] = {
 constexpr const char* kReplicas = "replica writes (level < 2 wide/high)";
 constexpr const char* kField2 = "interlaced field-2 item (with above)";
 constexpr const char* kOneLine = "interlaced one-line frame (progressive)";
-constexpr const char* kTie = "rounding tie (box sum = 2 mod 4)";
+constexpr const char* kTie = "rounding tie (a box mean halfway between two values)";
 constexpr const char* kSum0 = "box sum 0";
-constexpr const char* kSum1020 = "box sum 1020 (all 255)";
+constexpr const char* kSumMax = "box of all 255 (the largest sum)";
 constexpr const char* kFourPlanes = "four-plane texture, plane > 0";
 constexpr const char* kLaterFrame = "first texel of a later frame";
 constexpr const char* kNewFormat = "first texel after a new format";
@@ -237,7 +237,7 @@ std::vector<std::string> MipgenBlock::coverage_cases() const {
   if (top > 0) {
     cases.push_back(kTie);
     cases.push_back(kSum0);
-    cases.push_back(kSum1020);
+    cases.push_back(kSumMax);
   }
   cases.insert(cases.end(), {kFourPlanes, kLaterFrame, kNewFormat, kFrameEnd});
   return cases;
@@ -274,10 +274,11 @@ void MipgenBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&,
     top = top || w.level == g.levels() - 1;
   }
   if (top) ++cov[kFrameEnd];
-  for (const uint32_t sum : s.last_box_sums()) {
-    if (sum % 4 == 2) ++cov[kTie];
-    if (sum == 0) ++cov[kSum0];
-    if (sum == 1020) ++cov[kSum1020];
+  for (const texram::BoxSum& b : s.last_box_sums()) {
+    const uint32_t unit = uint32_t{4} << b.frac_bits;  // the sum of a box mean of 1
+    if (b.sum % unit == unit / 2) ++cov[kTie];
+    if (b.sum == 0) ++cov[kSum0];
+    if (b.sum == 255 * unit) ++cov[kSumMax];
   }
 }
 

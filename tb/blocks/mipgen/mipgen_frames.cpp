@@ -55,34 +55,14 @@ std::vector<Txn> mipgen_items(const texram::MipgenConfig& format, const texram::
 }
 
 texram::Level8 mipgen_tie_frame(int log2_w, int log2_h) {
-  // Top down from 128: a texel u of level l + 1 has the children (u-1, u-1, u-1, u+1) (sum
-  // 4u - 2) when level l is at least 2 x 2, (u-1, u) (sum 2(2u - 1)) when it is one texel wide
-  // or high; either way (sum + 2) >> 2 = u and the sum is 2 mod 4. Which child is the odd one
-  // out moves with the position. Values stay within 128 +- 10.
-  const texram::Geometry g(log2_w, log2_h);
-  texram::Level8 above(1, 1);
-  above.at(0, 0) = 128;
-  for (int l = g.levels() - 2; l >= 0; --l) {
-    texram::Level8 cur(g.texel_width(l), g.texel_height(l));
-    const bool wide = cur.width >= 2, high = cur.height >= 2;
-    for (uint32_t y = 0; y < cur.height; ++y) {
-      for (uint32_t x = 0; x < cur.width; ++x) {
-        const uint32_t px = wide ? x / 2 : 0, py = high ? y / 2 : 0;
-        const int u = above.at(px, py);
-        int v;
-        if (wide && high) {
-          const uint32_t odd_one = (px + py) & 3u;
-          v = ((x & 1u) + 2 * (y & 1u)) == odd_one ? u + 1 : u - 1;
-        } else {
-          const uint32_t bit = wide ? (x & 1u) : (y & 1u);
-          v = bit == ((px + py) & 1u) ? u : u - 1;
-        }
-        cur.at(x, y) = static_cast<uint8_t>(v);
-      }
-    }
-    above = std::move(cur);
+  // A checkerboard of 127 and 128: every box of 2 x 2 texels or more (and every pair of a
+  // one-texel-wide or -high level, which repeats it) has the mean 127.5 exactly, a tie at
+  // every level under the default (exact) rule; every level above 0 is 128.
+  texram::Level8 frame(uint32_t{1} << log2_w, uint32_t{1} << log2_h);
+  for (uint32_t y = 0; y < frame.height; ++y) {
+    for (uint32_t x = 0; x < frame.width; ++x) frame.at(x, y) = 127 + ((x + y) & 1u);
   }
-  return above;
+  return frame;
 }
 
 Txn mipgen_write_txn(const texram::CellWrite& w) {

@@ -24,7 +24,8 @@ std::vector<Txn> mipgen_frame_items(const texram::Level8& level0, bool interlace
 // What a driver sends for one frame of a new format: its configuration item, then the frame
 // (whose size must be the format's).
 std::vector<Txn> mipgen_items(const texram::MipgenConfig& format, const texram::Level8& level0);
-// A frame in which every 2 x 2 box sum of every level is 2 mod 4 (a rounding tie).
+// A frame in which every box of every level is a rounding tie (its mean halfway between two
+// 8-bit values) under the default rule of texram/mipmap.hpp.
 texram::Level8 mipgen_tie_frame(int log2_w, int log2_h);
 
 // A write as the wr channel carries it, and back.
