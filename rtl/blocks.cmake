@@ -98,7 +98,8 @@ function(tmu_mutant block name)
   if(failed)
     message(FATAL_ERROR "${model}: see the error above")
   endif()
-  add_custom_command(OUTPUT ${mutant} COMMAND ${CMAKE_COMMAND} ${mutate} -P ${script}
+  add_custom_command(OUTPUT ${mutant}
+    COMMAND ${CMAKE_COMMAND} ${mutate} -DROWS=${CMAKE_CURRENT_LIST_FILE} -P ${script}
     DEPENDS ${src} ${edit} ${TMU_RTL_DIR}/mutate.cmake VERBATIM)
   set(sources ${TMU_SOURCES_${top}})
   list(TRANSFORM sources REPLACE "^${src}$" ${mutant})
@@ -307,7 +308,7 @@ tmu_mutant(mipgen round FILE texram/tmu_mipgen.sv
   FROM "(sum + (SumW'(2) << k))" TO "(sum + (SumW'(1) << k))"
   WHY "the texel's rounding adds a quarter instead of half of 2^(k+2) before dropping k + 2 bits (wrong on every tie)")
 tmu_mutant(mipgen carry FILE texram/tmu_mipgen.sv
-  FROM "KW'(2 * lvl_q + 2) : KW'(CarryBits);" TO "KW'(2 * lvl_q + 1) : KW'(CarryBits);"
+  FROM "KW'((2 * l < CarryBits) ? 2 * l : CarryBits)" TO "KW'((2 * l < CarryBits) ? (l > 1 ? 2 * l - 1 : 2 * l) : CarryBits)"
   WHY "the carried values keep one fraction bit less than the rule: sums lose their last bit, some texels from level 2 on are one off")
 tmu_mutant(mipgen above FILE texram/tmu_mipgen.sv
   FROM "pair = PairW'(val_q) + PairW'(above_q);" TO "pair = PairW'(val_q) + PairW'(val_q);"

@@ -192,9 +192,16 @@ module tmu_mipgen #(
   logic [KW-1:0]   k, k_next, drop;
   logic [SumW-1:0] texel_sum, carry_sum;
 
-  // min(2 l, CarryBits) and min(2 l + 2, CarryBits) (signed: no constant compare at 0).
-  assign k      = (2 * int'(lvl_q) < int'(CarryBits)) ? KW'(2 * lvl_q) : KW'(CarryBits);
-  assign k_next = (2 * int'(lvl_q) + 2 < int'(CarryBits)) ? KW'(2 * lvl_q + 2) : KW'(CarryBits);
+  // K(l) = min(2 l, CarryBits) of every level, a table fixed at elaboration.
+  localparam int unsigned Levels = 1 << LevelW;
+  logic [Levels*KW-1:0] frac_of;
+  for (genvar l = 0; l < Levels; l++) begin : gen_frac
+    assign frac_of[l*KW +: KW] = KW'((2 * l < CarryBits) ? 2 * l : CarryBits);
+  end
+  tmu_pkg::mip_level_t lvl_next;
+  assign lvl_next = lvl_q + LevelW'(1);  // lvl_q <= MaxLog2 < 15: no wrap
+  assign k        = frac_of[lvl_q*KW +: KW];
+  assign k_next   = frac_of[lvl_next*KW +: KW];
   assign drop   = k + KW'(2) - k_next;
   // At most 255 2^(k+2) + 2^(k+1) < 2^SumW: no carry out.
   assign texel_sum = (sum + (SumW'(2) << k)) >> (k + KW'(2));

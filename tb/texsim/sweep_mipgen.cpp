@@ -85,7 +85,7 @@ void sweep_mipgen(const MipgenSweepArgs& args) {
       "mipgen: {} ({} x {}), R, G and B; each level against the exact box mean of level 0, in "
       "8-bit levels; bits at 1024 x 1024 (MaxLog2 10)\n",
       args.image.empty() ? "the photo-like field" : args.image, image.width, image.height);
-  std::vector<std::string> header = {"carry", "max |err|", "mean err, top"};
+  std::vector<std::string> header = {"carry", "max abs err", "top mean err"};
   for (size_t l = 1; l <= levels; ++l) header.push_back(fmt::format("L{} mean/max", l));
   for (const char* h : {"FIFO bits", "hold bits", "cells", "logic", "depth"}) header.push_back(h);
   SweepTable table(header);
