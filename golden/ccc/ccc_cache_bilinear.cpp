@@ -84,6 +84,52 @@ uint32_t bilerp_rgb(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, uint
   return out;
 }
 
+void BilinearCache::reset() {
+  entries_ = {};
+  stats_ = {};
+}
+
+void BilinearCache::write_clut(uint8_t index, uint32_t rgb) {
+  clut_[index] = rgb & 0xFFFFFFu;
+  for (CacheEntry& e : entries_) e.valid = false;  // the decoded colours are stale
+}
+
+BlockList BilinearCache::missing(const BlockList& list, uint32_t width) const {
+  BlockList out;
+  for (uint32_t i = 0; i < list.count; ++i) {
+    const CacheEntry& e = entries_[cache_slot(list.at[i])];
+    if (!e.valid || e.tag != block_address(list.at[i], width)) out.at[out.count++] = list.at[i];
+  }
+  return out;
+}
+
+BlockList BilinearCache::look_up(const Footprint& fp, uint32_t width) {
+  const BlockList need = footprint_blocks(fp);
+  const BlockList miss = missing(need, width);
+  stats_.hits += need.count - miss.count;
+  stats_.misses += miss.count;
+  return miss;
+}
+
+BlockList BilinearCache::look_ahead(int32_t u_raw, int32_t v_raw, uint32_t width, uint32_t height) {
+  const BlockList miss = missing(lookahead_blocks(u_raw, v_raw, width, height), width);
+  stats_.prefetches += miss.count;
+  return miss;
+}
+
+void BilinearCache::fill(BlockXY b, uint32_t address, uint32_t word) {
+  const Block blk = Block::from_word(word);
+  entries_[cache_slot(b)] = {true, address, clut_[blk.a], clut_[blk.b], blk.bits};
+}
+
+uint32_t BilinearCache::blend(const Footprint& fp) const {
+  auto texel = [&](uint32_t x, uint32_t y) {
+    return entry_texel(entries_[cache_slot({x / 4, y / 4})], x, y);
+  };
+  return bilerp_rgb(texel(fp.x0, fp.y0), texel(fp.x1, fp.y0), texel(fp.x0, fp.y1),
+                    texel(fp.x1, fp.y1), fp.fx, fp.fy);
+}
+
 CacheBilinearUnit::CacheBilinearUnit(uint32_t width, uint32_t height, bool lookahead, FetchFn fetch)
     : fetch_(std::move(fetch)) {
   configure(width, height, lookahead);
@@ -98,41 +144,20 @@ void CacheBilinearUnit::configure(uint32_t width, uint32_t height, bool lookahea
   lookahead_ = lookahead;
 }
 
-void CacheBilinearUnit::write_clut(uint8_t index, uint32_t rgb) {
-  clut_[index] = rgb & 0xFFFFFFu;
-  for (CacheEntry& e : entries_) e.valid = false;
-}
+void CacheBilinearUnit::write_clut(uint8_t index, uint32_t rgb) { cache_.write_clut(index, rgb); }
 
-bool CacheBilinearUnit::ensure(BlockXY b) {
-  CacheEntry& e = entries_[cache_slot(b)];
-  const uint32_t tag = block_address(b, width_);
-  if (e.valid && e.tag == tag) return true;
-  const Block blk = Block::from_word(fetch_(tag));
-  e = {true, tag, clut_[blk.a], clut_[blk.b], blk.bits};
-  return false;
+void CacheBilinearUnit::fetch(const BlockList& blocks) {
+  for (uint32_t i = 0; i < blocks.count; ++i) {
+    const uint32_t address = block_address(blocks.at[i], width_);
+    cache_.fill(blocks.at[i], address, fetch_(address));
+  }
 }
 
 uint32_t CacheBilinearUnit::sample(int32_t u_raw, int32_t v_raw) {
   const Footprint fp = footprint(u_raw, v_raw, width_, height_);
-  const BlockList need = footprint_blocks(fp);
-  for (uint32_t i = 0; i < need.count; ++i) {
-    if (ensure(need.at[i])) {
-      ++stats_.hits;
-    } else {
-      ++stats_.misses;
-    }
-  }
-  auto texel = [&](uint32_t x, uint32_t y) {
-    return entry_texel(entries_[cache_slot({x / 4, y / 4})], x, y);
-  };
-  const uint32_t rgb = bilerp_rgb(texel(fp.x0, fp.y0), texel(fp.x1, fp.y0), texel(fp.x0, fp.y1),
-                                  texel(fp.x1, fp.y1), fp.fx, fp.fy);
-  if (lookahead_) {
-    const BlockList ahead = lookahead_blocks(u_raw, v_raw, width_, height_);
-    for (uint32_t i = 0; i < ahead.count; ++i) {
-      if (!ensure(ahead.at[i])) ++stats_.prefetches;
-    }
-  }
+  fetch(cache_.look_up(fp, width_));
+  const uint32_t rgb = cache_.blend(fp);
+  if (lookahead_) fetch(cache_.look_ahead(u_raw, v_raw, width_, height_));
   return rgb;
 }
 

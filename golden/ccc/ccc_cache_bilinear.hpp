@@ -85,6 +85,35 @@ struct CacheStats {
   friend bool operator==(const CacheStats&, const CacheStats&) = default;
 };
 
+// The cache's state and policy, split where the memory is, so that the golden unit (which
+// runs the steps back to back) and the hls model (which clocks the memory port between them)
+// share every decision. A request is: look_up, the footprint's missing blocks in fetch order;
+// fill for each as its word arrives; blend; then, with lookahead, look_ahead and its fills.
+// The blocks of one step sit in different entries, so deciding them all before fetching any
+// is the same as deciding each just before its fetch.
+class BilinearCache {
+ public:
+  void reset();                                  // entries and statistics; the CLUT is a RAM
+  void write_clut(uint8_t index, uint32_t rgb);  // also invalidates every entry
+  // The missing blocks of the footprint; counts hits and misses.
+  BlockList look_up(const Footprint& fp, uint32_t width);
+  // The missing lookahead blocks of the point; counts prefetches.
+  BlockList look_ahead(int32_t u_raw, int32_t v_raw, uint32_t width, uint32_t height);
+  // The block word fetched from `address` decoded into b's entry.
+  void fill(BlockXY b, uint32_t address, uint32_t word);
+  uint32_t blend(const Footprint& fp) const;  // Rgb888, once the footprint is present
+
+  const CacheStats& stats() const { return stats_; }
+  const std::array<CacheEntry, 4>& entries() const { return entries_; }
+
+ private:
+  BlockList missing(const BlockList& list, uint32_t width) const;
+
+  std::array<uint32_t, 256> clut_{};
+  std::array<CacheEntry, 4> entries_{};
+  CacheStats stats_;
+};
+
 // The unit as a transaction-level state machine.
 class CacheBilinearUnit {
  public:
@@ -100,19 +129,16 @@ class CacheBilinearUnit {
   void write_clut(uint8_t index, uint32_t rgb);   // also invalidates every entry
   uint32_t sample(int32_t u_raw, int32_t v_raw);  // Rgb888
 
-  const CacheStats& stats() const { return stats_; }
-  const std::array<CacheEntry, 4>& entries() const { return entries_; }
+  const CacheStats& stats() const { return cache_.stats(); }
+  const std::array<CacheEntry, 4>& entries() const { return cache_.entries(); }
 
  private:
-  // Ensures the block is resident; returns true when it already was.
-  bool ensure(BlockXY b);
+  void fetch(const BlockList& blocks);
 
   uint32_t width_ = 0, height_ = 0;
   bool lookahead_ = false;
   FetchFn fetch_;
-  std::array<uint32_t, 256> clut_{};
-  std::array<CacheEntry, 4> entries_{};
-  CacheStats stats_;
+  BilinearCache cache_;
 };
 
 // Ideal (double precision) bilinear sample of the decoded texture at real (u, v), with the

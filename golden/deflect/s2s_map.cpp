@@ -64,28 +64,42 @@ MapAddress map_address(const SphereGrid& g, uint32_t phi_prime, uint32_t theta_p
   return a;
 }
 
-Deflected DeflectionUnit::deflect(SphereAngle normal, SphereAngle bump) {
-  const SphereGrid& g = map_.grid();
-  const uint32_t q = g.quarter();
+MapAddress deflect_address(const SphereGrid& g, SphereAngle normal, SphereAngle bump) {
   const uint32_t phi_prime =
       static_cast<uint32_t>(static_cast<int32_t>(bump.phi) - theta_steps(g, normal.theta)) &
       g.phi_mask();
-  const MapAddress a = map_address(g, phi_prime, bump.theta);
+  return map_address(g, phi_prime, bump.theta);
+}
 
-  Deflected out;
-  uint32_t l_phi = q, l_theta = std::min(q - a.k_theta, q - 1);
-  if (a.k == q) {
-    out.access = MapAccess::kBypass;
-  } else {
-    out.access = mbr_valid_ && mbr_tag_ == a.block ? MapAccess::kHit : MapAccess::kMiss;
-    mbr_valid_ = true;
-    mbr_tag_ = a.block;
-    const uint32_t e = map_.entry(a.k_theta, a.k);
-    l_phi = e >> g.mag_bits();
+MapAccess MapBuffer::access(const MapAddress& a) const {
+  if (a.k == grid_.quarter()) return MapAccess::kBypass;
+  return valid_ && tag_ == a.block ? MapAccess::kHit : MapAccess::kMiss;
+}
+
+void MapBuffer::fill(uint32_t tag, const std::array<uint32_t, kBlockEntries>& block) {
+  valid_ = true;
+  tag_ = tag;
+  block_ = block;
+}
+
+SphereAngle MapBuffer::deflected(SphereAngle normal, const MapAddress& a) const {
+  const uint32_t q = grid_.quarter();
+  uint32_t l_phi = q, l_theta = std::min(q - a.k_theta, q - 1);  // z = 0: no look-up
+  if (a.k != q) {
+    const uint32_t e = block_[a.offset];
+    l_phi = e >> grid_.mag_bits();
     l_theta = e & (q - 1);
   }
-  out.normal.phi = (expand_phi(g, a.sx, a.sz, l_phi) + normal.phi) & g.phi_mask();
-  out.normal.theta = make_theta(g, a.sy, l_theta);
+  return {(expand_phi(grid_, a.sx, a.sz, l_phi) + normal.phi) & grid_.phi_mask(),
+          make_theta(grid_, a.sy, l_theta)};
+}
+
+Deflected DeflectionUnit::deflect(SphereAngle normal, SphereAngle bump) {
+  const MapAddress a = deflect_address(map_.grid(), normal, bump);
+  Deflected out;
+  out.access = mbr_.access(a);
+  if (out.access == MapAccess::kMiss) mbr_.fill(a.block, map_.block(a.block));
+  out.normal = mbr_.deflected(normal, a);
   return out;
 }
 

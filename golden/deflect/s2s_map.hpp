@@ -78,22 +78,43 @@ struct MapAddress {
 };
 MapAddress map_address(const SphereGrid& grid, uint32_t phi_prime, uint32_t theta_prime);
 
+// The look-up address of a request: the roll phi' = phi_D - theta_N, then the reduction.
+MapAddress deflect_address(const SphereGrid& grid, SphereAngle normal, SphereAngle bump);
+
 struct Deflected {
   SphereAngle normal;
   MapAccess access = MapAccess::kHit;
 };
 
+// The MBR and the deflection split where the map memory is, so that the golden unit (which
+// runs the steps back to back) and the hls model (which waits for the memory between them)
+// share every decision: access(a) tells whether block a.block must be filled first (kMiss);
+// fill() loads it; deflected() is then the result, from the MBR's entry or the z = 0 column.
+class MapBuffer {
+ public:
+  explicit MapBuffer(const SphereGrid& grid) : grid_(grid) {}
+  MapAccess access(const MapAddress& a) const;
+  void fill(uint32_t tag, const std::array<uint32_t, kBlockEntries>& block);
+  SphereAngle deflected(SphereAngle normal, const MapAddress& a) const;
+  void reset() { valid_ = false; }
+
+ private:
+  SphereGrid grid_;
+  bool valid_ = false;
+  uint32_t tag_ = 0;
+  std::array<uint32_t, kBlockEntries> block_{};
+};
+
 // The unit with its MBR: results depend on the order of the requests.
 class DeflectionUnit {
  public:
-  explicit DeflectionUnit(const S2sMap& map) : map_(map) {}
+  explicit DeflectionUnit(const S2sMap& map) : map_(map), mbr_(map.grid()) {}
   Deflected deflect(SphereAngle normal, SphereAngle bump);
-  void reset() { mbr_valid_ = false; }
+  void reset() { mbr_.reset(); }
 
  private:
   const S2sMap& map_;
-  bool mbr_valid_ = false;
-  uint32_t mbr_tag_ = 0;
+  MapBuffer mbr_;
 };
 
 }  // namespace tmu::deflect

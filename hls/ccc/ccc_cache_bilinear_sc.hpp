@@ -1,25 +1,21 @@
 // SystemC model of the low-cost CCC texture unit (000 §4, Figs. 6 and 7), the same ports
-// and handshakes as rtl/ccc/tmu_ccc_cache_bilinear.sv. Its arithmetic is the golden model's
-// (golden/ccc/ccc_cache_bilinear.hpp: footprint, footprint_blocks, lookahead_blocks,
-// cache_slot, block_address, entry_texel, bilerp_rgb); the module adds the clocking: one
-// clocked thread that accepts a CLUT write or a request while idle, fetches the missing
-// blocks through the one-outstanding memory port (request, response, CLUT colour a, CLUT
-// colour b: the 2:1 multiplexer of Fig. 6), loads the blend into a one-entry output
+// and handshakes as rtl/ccc/tmu_ccc_cache_bilinear.sv. Its arithmetic and cache policy are
+// the golden model's (golden/ccc/ccc_cache_bilinear.hpp: footprint and the steps of
+// BilinearCache, which CacheBilinearUnit::sample runs back to back); the module adds the
+// clocking: one clocked thread that accepts a CLUT write or a request while idle, fetches the
+// missing blocks through the one-outstanding memory port (request, response, CLUT colour a,
+// CLUT colour b: the 2:1 multiplexer of Fig. 6), loads the blend into a one-entry output
 // register, then runs the lookahead before it is idle again.
 //
 // The statistics count at the decision, as the RTL does: hits and misses when the request is
-// looked up, prefetches when the blend is loaded; the blocks of one step (a footprint, or a
-// lookahead) sit in different entries, so deciding them all before fetching any is the
-// golden model's block-by-block order.
+// looked up, prefetches when the blend is loaded.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <systemc>
 
 #include "blocks/ccc_cache_bilinear/ccc_cache_bilinear_ports.hpp"
 #include "ccc/ccc_cache_bilinear.hpp"
-#include "ccc/ccc_texture.hpp"
 #include "formats/formats.hpp"
 #include "hls/common/sc_ports.hpp"
 
@@ -45,10 +41,9 @@ SC_MODULE(CccCacheBilinearSc) {
     mem_req_addr_o.write(0);
     out_valid_o.write(false);
     out_rgb_o.write(0);
-    entries_ = {};
+    cache_.reset();
     out_full_ = false;
     out_rgb_ = 0;
-    hits_ = misses_ = prefetches_ = 0;
     write_stats();
     wait();
     while (true) {
@@ -59,8 +54,8 @@ SC_MODULE(CccCacheBilinearSc) {
       clut_ready_o.write(false);
       req_ready_o.write(false);
       if (clut_valid_i.read()) {
-        clut_[static_cast<uint8_t>(clut_addr_i.read())] = static_cast<uint32_t>(clut_rgb_i.read());
-        for (ccc::CacheEntry& e : entries_) e.valid = false;  // the decoded colours are stale
+        cache_.write_clut(static_cast<uint8_t>(clut_addr_i.read()),
+                          static_cast<uint32_t>(clut_rgb_i.read()));
       }
       if (req_valid_i.read()) {
         serve(static_cast<int32_t>(signed_value(req_u_i.read(), fmts::kTexCoord)),
@@ -79,28 +74,15 @@ SC_MODULE(CccCacheBilinearSc) {
     if (out_full_ && out_ready_i.read()) out_full_ = false;
   }
 
+  // The ports keep the counts' low 32 bits: the RTL's registers wrap.
   void write_stats() {
-    stat_hits_o.write(hits_);
-    stat_misses_o.write(misses_);
-    stat_prefetches_o.write(prefetches_);
+    stat_hits_o.write(cache_.stats().hits);
+    stat_misses_o.write(cache_.stats().misses);
+    stat_prefetches_o.write(cache_.stats().prefetches);
   }
 
   uint32_t width() const { return static_cast<uint32_t>(cfg_width_i.read()); }
   uint32_t height() const { return static_cast<uint32_t>(cfg_height_i.read()); }
-
-  bool present(ccc::BlockXY b) const {
-    const ccc::CacheEntry& e = entries_[ccc::cache_slot(b)];
-    return e.valid && e.tag == ccc::block_address(b, width());
-  }
-
-  // The blocks of `list` that are not present, in list order.
-  ccc::BlockList missing(const ccc::BlockList& list) const {
-    ccc::BlockList out;
-    for (uint32_t i = 0; i < list.count; ++i) {
-      if (!present(list.at[i])) out.at[out.count++] = list.at[i];
-    }
-    return out;
-  }
 
   // Fetches a block and decodes its colours into its entry.
   void fill(ccc::BlockXY b) {
@@ -114,40 +96,29 @@ SC_MODULE(CccCacheBilinearSc) {
     do {
       step();
     } while (!mem_resp_valid_i.read());
-    const ccc::Block blk = ccc::Block::from_word(static_cast<uint32_t>(mem_resp_block_i.read()));
+    const auto word = static_cast<uint32_t>(mem_resp_block_i.read());
     step();  // CLUT read of colour a
     step();  // CLUT read of colour b
-    entries_[ccc::cache_slot(b)] = {true, address, clut_[blk.a], clut_[blk.b], blk.bits};
+    cache_.fill(b, address, word);
+  }
+
+  void fill(const ccc::BlockList& blocks) {
+    for (uint32_t i = 0; i < blocks.count; ++i) fill(blocks.at[i]);
   }
 
   void serve(int32_t u_raw, int32_t v_raw) {
     const ccc::Footprint fp = ccc::footprint(u_raw, v_raw, width(), height());
-    const ccc::BlockList need = ccc::footprint_blocks(fp);
-    const ccc::BlockList miss = missing(need);
-    hits_ += need.count - miss.count;
-    misses_ += miss.count;
-    for (uint32_t i = 0; i < miss.count; ++i) fill(miss.at[i]);
-
-    auto texel = [&](uint32_t x, uint32_t y) {
-      return ccc::entry_texel(entries_[ccc::cache_slot({x / 4, y / 4})], x, y);
-    };
-    const uint32_t rgb = ccc::bilerp_rgb(texel(fp.x0, fp.y0), texel(fp.x1, fp.y0),
-                                         texel(fp.x0, fp.y1), texel(fp.x1, fp.y1), fp.fx, fp.fy);
+    fill(cache_.look_up(fp, width()));
+    const uint32_t rgb = cache_.blend(fp);
     while (out_full_) step();
     out_full_ = true;
     out_rgb_ = rgb;
-
-    if (!cfg_lookahead_i.read()) return;
-    const ccc::BlockList ahead = missing(ccc::lookahead_blocks(u_raw, v_raw, width(), height()));
-    prefetches_ += ahead.count;
-    for (uint32_t i = 0; i < ahead.count; ++i) fill(ahead.at[i]);
+    if (cfg_lookahead_i.read()) fill(cache_.look_ahead(u_raw, v_raw, width(), height()));
   }
 
-  std::array<uint32_t, fmts::kClutEntries> clut_{};  // a RAM: no reset
-  std::array<ccc::CacheEntry, fmts::kCccCacheEntries> entries_{};
+  ccc::BilinearCache cache_;  // its CLUT is a RAM: reset keeps it
   bool out_full_ = false;
   uint32_t out_rgb_ = 0;
-  uint32_t hits_ = 0, misses_ = 0, prefetches_ = 0;  // 32-bit registers: wrap like the RTL
 };
 
 }  // namespace tmu::hls

@@ -36,14 +36,6 @@ uint32_t wrap_phi(int64_t steps) {
   return static_cast<uint32_t>(((steps % kPhiCount) + kPhiCount) % kPhiCount);
 }
 
-// The octant reduction of a request: phi' = phi_D - theta_N (modulo 4Q) and the bump's theta.
-deflect::MapAddress look_up(SphereAngle normal, SphereAngle bump) {
-  const uint32_t phi_prime = static_cast<uint32_t>(static_cast<int32_t>(bump.phi) -
-                                                   deflect::theta_steps(kGrid, normal.theta)) &
-                             kGrid.phi_mask();
-  return deflect::map_address(kGrid, phi_prime, bump.theta);
-}
-
 // The unit with its MBR over a run: every miss is a request for its block.
 class Golden : public Model {
  public:
@@ -54,7 +46,7 @@ class Golden : public Model {
     const deflect::Deflected d = unit_.deflect(normal, bump);
     if (d.access == MapAccess::kMiss) {
       Txn request;
-      request.f[D::map_req_block] = look_up(normal, bump).block;
+      request.f[D::map_req_block] = deflect::deflect_address(kGrid, normal, bump).block;
       sink.request(0, request);
       ++fetches_;
     }
@@ -327,7 +319,7 @@ void DeflectBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&
   const SphereAngle normal = deflect_normal(items[index]), bump = deflect_bump(items[index]);
   const int64_t phi_prime_steps = int64_t{bump.phi} - deflect::theta_steps(kGrid, normal.theta);
   const auto phi_prime = static_cast<uint32_t>(wrap_phi(phi_prime_steps));
-  const deflect::MapAddress a = look_up(normal, bump);
+  const deflect::MapAddress a = deflect::deflect_address(kGrid, normal, bump);
   const bool bypass = a.k == kGrid.quarter();
   const auto access = static_cast<MapAccess>(output.f[D::out_access]);
   const uint32_t top = kGrid.quarter() - 1;
