@@ -1,5 +1,7 @@
 // The offline CCC encoder (000 §3): every 4x4 block is reduced to two colours a, b and 16
-// decision bits, then all block colours are quantized together to the 256-entry CLUT.
+// decision bits, then all block colours are quantized together to the 256-entry CLUT, and
+// each block's two CLUT indices and 16 bits are chosen against that CLUT to minimise the
+// block's squared error over the texels inside the image (docs/ccc.md).
 // Host code; compression is done in advance, so it favours quality over speed.
 #pragma once
 

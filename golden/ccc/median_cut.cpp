@@ -236,35 +236,61 @@ PaletteSearch::PaletteSearch(const Palette& palette) {
   });
 }
 
-uint8_t PaletteSearch::nearest(const Vec3& rgb) const {
+template <typename Consider, typename Bound>
+void PaletteSearch::walk(const Vec3& rgb, Consider&& consider, Bound&& bound) const {
   const double q = rgb[axis_];
   const auto start =
       std::lower_bound(sorted_.begin(), sorted_.end(), q,
                        [this](const Entry& e, double v) { return e.rgb[axis_] < v; });
-  uint8_t best = 0;
-  double best_d = INFINITY;
-  auto consider = [&](const Entry& e) {
-    const double d = distance2(e.rgb, rgb);
-    if (d < best_d || (d == best_d && e.index < best)) {
-      best = e.index;
-      best_d = d;
-    }
-  };
   // The full distance is never below the squared axis gap, and the gap only grows
-  // outward, so a walk stops once the gap exceeds the best. An equal gap may still tie
+  // outward, so a walk stops once the gap exceeds the bound. An equal gap may still tie
   // with a lower index, hence `>` rather than `>=`.
   for (auto it = start; it != sorted_.end(); ++it) {
     const double gap = it->rgb[axis_] - q;
-    if (gap * gap > best_d) break;
+    if (gap * gap > bound()) break;
     consider(*it);
   }
   for (auto it = start; it != sorted_.begin();) {
     --it;
     const double gap = q - it->rgb[axis_];
-    if (gap * gap > best_d) break;
+    if (gap * gap > bound()) break;
     consider(*it);
   }
+}
+
+uint8_t PaletteSearch::nearest(const Vec3& rgb) const {
+  uint8_t best = 0;
+  double best_d = INFINITY;
+  walk(
+      rgb,
+      [&](const Entry& e) {
+        const double d = distance2(e.rgb, rgb);
+        if (d < best_d || (d == best_d && e.index < best)) {
+          best = e.index;
+          best_d = d;
+        }
+      },
+      [&] { return best_d; });
   return best;
+}
+
+std::vector<uint8_t> PaletteSearch::nearest(const Vec3& rgb, size_t k) const {
+  k = std::min(k, sorted_.size());
+  if (k == 0) return {};
+  std::vector<std::pair<double, uint8_t>> best;  // ascending (distance, index), at most k
+  best.reserve(k + 1);
+  walk(
+      rgb,
+      [&](const Entry& e) {
+        const std::pair<double, uint8_t> c{distance2(e.rgb, rgb), e.index};
+        if (best.size() == k && !(c < best.back())) return;
+        best.insert(std::upper_bound(best.begin(), best.end(), c), c);
+        if (best.size() > k) best.pop_back();
+      },
+      [&] { return best.size() < k ? INFINITY : best.back().first; });
+  std::vector<uint8_t> out;
+  for (const auto& [d, index] : best) out.push_back(index);
+  return out;
 }
 
 }  // namespace tmu::ccc

@@ -47,12 +47,19 @@ class PaletteSearch {
  public:
   explicit PaletteSearch(const Palette& palette);
   uint8_t nearest(const Vec3& rgb) const;
+  // The min(k, used) entries nearest to `rgb`, nearest first, ties to the lower index: the
+  // first is nearest(rgb).
+  std::vector<uint8_t> nearest(const Vec3& rgb, size_t k) const;
 
  private:
   struct Entry {
     Vec3 rgb;
     uint8_t index;
   };
+  // Calls consider(entry) for the entries outward from `rgb` along the axis until the
+  // squared axis gap exceeds bound().
+  template <typename Consider, typename Bound>
+  void walk(const Vec3& rgb, Consider&& consider, Bound&& bound) const;
   int axis_ = 0;
   std::vector<Entry> sorted_;  // by rgb[axis_], then index
 };
