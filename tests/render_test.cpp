@@ -77,6 +77,27 @@ TEST(RenderTest, PlainSceneBuildsAndClocksOnlyTheTrilinearUnits) {
             << " cycles; everything: " << all.unit_cycles() << " cycles\n";
 }
 
+// A unit whose material has no fragment in the band is not built: in each band of
+// scenes/everything.json the floor's mipmap generator is built exactly when the floor's
+// footprint unit is (the floor has fragments there), and some band has no floor at all.
+TEST(RenderTest, MipmapGeneratorIsBuiltOnlyForABandThatShowsItsMaterial) {
+  constexpr int kBands = 8;
+  int without = 0, with = 0;
+  for (int band = 0; band < kBands; ++band) {
+    reset_census();
+    RenderOptions o = options(Level::kGolden, "everything_band" + std::to_string(band));
+    o.tile = band;
+    o.tiles = kBands;
+    const RenderReport r = render("everything.json", o);
+    const bool floor_shown = has_kind(r, "footprint");
+    EXPECT_EQ(census("mipgen").built > 0, floor_shown) << "band " << band;
+    EXPECT_EQ(has_kind(r, "mipgen"), floor_shown) << "band " << band;
+    (floor_shown ? with : without) += 1;
+  }
+  EXPECT_GT(without, 0);
+  EXPECT_GT(with, 0);
+}
+
 // The units of each material of scenes/reflect.json, in the order the chain runs them
 // (render/effect_chain.hpp): what the material names is built, nothing else.
 TEST(RenderTest, DeflectionChainBuildsWhatEachMaterialNames) {

@@ -107,31 +107,10 @@ Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level
             ccc_file ? texram::import_ccc(ccc::read_ccc(mat.texture.path))
                      : texram::import_image(source_image(mat.texture), mat.sampler.kind,
                                             mat.sampler.single_channel);
-        if (mat.mipmaps == host::Material::Mipmaps::kMipgen && level != Level::kIdeal) {
-          // The real-time mipmap generator (000 §12) writes every level into the banks from
-          // the level-0 texels, one stream per byte plane; the trilinear unit then reads what
-          // it wrote. (Ideal keeps the host pyramid: the same box rule, computed exactly.)
-          const texram::Geometry& g = tex.geometry;
-          texram::TexramTexture generated{tex.kind, g, {}, tex.clut};
-          for (auto& b : generated.banks) b.assign(g.bank_cells(), 0);
-          const auto block = std::make_shared<tb::MipgenBlock>();
-          for (int p = 0; p < g.planes(); ++p) {
-            const texram::MipgenConfig cfg{g.log2_width(), g.log2_height(), false, g.planes(), p};
-            UnitRun run;
-            run.kind = "mipgen";
-            run.material = mat.name + (g.planes() > 1 ? fmt::format(".plane{}", p) : "");
-            attach(run, block);
-            run.items = tb::mipgen_items(cfg, level0_plane(tex, p));
-            run_unit(run, level, {});
-            for (const tb::Txn& w : run.result.outputs) {
-              const texram::CellWrite cw = tb::mipgen_txn_write(w);
-              generated.banks[cw.cell.bank][cw.cell.address] = cw.value;
-            }
-            units_.push_back(std::move(run));
-            fragment_of_output_.emplace_back();
-          }
-          tex = std::move(generated);
-        }
+        // The real-time mipmap generator runs when the first fragment of the material needs
+        // the texture (shade()): a material with none in the frame or band builds no unit.
+        mt.mipgen_pending =
+            mat.mipmaps == host::Material::Mipmaps::kMipgen && level != Level::kIdeal;
         mt.size = {static_cast<int>(tex.geometry.texel_width(0)),
                    static_cast<int>(tex.geometry.texel_height(0))};
         mt.texram = std::make_shared<const texram::TexramTexture>(std::move(tex));
@@ -144,6 +123,36 @@ Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level
     if (mat.uses_normal()) mt.effects = build_effect_maps(scene, mat);
     textures_.push_back(std::move(mt));
   }
+}
+
+void Pipeline::generate_mipmaps(size_t m) {
+  // The real-time mipmap generator (000 §12) writes every level into the banks from the
+  // level-0 texels, one stream per byte plane; the trilinear unit then reads what it wrote.
+  // (Ideal keeps the host pyramid, which the generator's rule computes: texram/mipmap.hpp.)
+  MaterialTexture& mt = textures_[m];
+  const host::Material& mat = scene_.materials[m];
+  const texram::TexramTexture& tex = *mt.texram;
+  const texram::Geometry& g = tex.geometry;
+  texram::TexramTexture generated{tex.kind, g, {}, tex.clut};
+  for (auto& b : generated.banks) b.assign(g.bank_cells(), 0);
+  const auto block = std::make_shared<tb::MipgenBlock>();
+  for (int p = 0; p < g.planes(); ++p) {
+    const texram::MipgenConfig cfg{g.log2_width(), g.log2_height(), false, g.planes(), p};
+    UnitRun run;
+    run.kind = "mipgen";
+    run.material = mat.name + (g.planes() > 1 ? fmt::format(".plane{}", p) : "");
+    attach(run, block);
+    run.items = tb::mipgen_items(cfg, level0_plane(tex, p));
+    run_unit(run, level_, {});
+    for (const tb::Txn& w : run.result.outputs) {
+      const texram::CellWrite cw = tb::mipgen_txn_write(w);
+      generated.banks[cw.cell.bank][cw.cell.address] = cw.value;
+    }
+    units_.push_back(std::move(run));
+    fragment_of_output_.emplace_back();
+  }
+  mt.texram = std::make_shared<const texram::TexramTexture>(std::move(generated));
+  mt.mipgen_pending = false;
 }
 
 std::vector<glm::ivec2> Pipeline::texture_sizes() const {
@@ -166,6 +175,7 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
   for (size_t m = 0; m < scene_.materials.size(); ++m) {
     const std::vector<size_t>& frags = of_material[m];
     if (frags.empty()) continue;  // no fragment, no unit
+    if (textures_[m].mipgen_pending) generate_mipmaps(m);
     const host::Material& mat = scene_.materials[m];
     const MaterialTexture& tex = textures_[m];
     const bool lowcost = mat.unit == host::Material::Unit::kLowcost;

@@ -29,6 +29,9 @@ struct MaterialTexture {
   std::shared_ptr<const ccc::Texture> ccc;              // the low-cost unit's level 0
   glm::ivec2 size{1, 1};                                // level-0 texels
   EffectMaps effects;                                   // what the deflection chain reads
+  // texram holds the host pyramid until the mipmap generator writes the banks, which it does
+  // for the material's first fragments (Pipeline::shade).
+  bool mipgen_pending = false;
 };
 
 // The unit that samples a material's texture (trilinear, or footprint in front of it; not the
@@ -50,9 +53,10 @@ using Progress = std::function<void(uint64_t done, uint64_t total)>;
 
 class Pipeline {
  public:
-  // Builds every material's texture; a mipgen chain runs its mipgen unit here (at `level`;
-  // the host pyramid for ideal, which is what the golden generator computes). Throws
-  // InputError naming the scene and the material's texture field.
+  // Loads every material's texture. A mipgen chain's mipgen unit runs (at `level`) when its
+  // material's first fragments are shaded, so a material without any builds none; ideal keeps
+  // the host pyramid, which is what the generator's rule computes. Throws InputError naming
+  // the scene and the material's texture field.
   Pipeline(const host::Scene& scene, Level level);
 
   Level level() const { return level_; }
@@ -67,7 +71,8 @@ class Pipeline {
                               std::vector<glm::dvec4>* ideal_rgba,
                               const Progress& progress = nullptr);
 
-  // Every unit built so far, with its stimulus and results (mipgen units first).
+  // Every unit built so far, with its stimulus and results, in the order they ran (a
+  // material's mipgen units before its chain).
   std::vector<UnitRun>& units() { return units_; }
   const std::vector<UnitRun>& units() const { return units_; }
   // For each unit (same order), the fragment index of each of its outputs (mipgen: none).
@@ -78,6 +83,9 @@ class Pipeline {
  private:
   const host::Scene& scene_;
   Level level_;
+  // The mipgen units of material m: its texture's levels written by the generator.
+  void generate_mipmaps(size_t m);
+
   std::vector<MaterialTexture> textures_;
   std::vector<UnitRun> units_;
   std::vector<std::vector<size_t>> fragment_of_output_;

@@ -41,14 +41,12 @@ UnitCensus& census(const std::string& kind) { return census_map()[kind]; }
 void reset_census() { census_map().clear(); }
 
 void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options) {
-  UnitCensus& c = census(unit.kind);
-  ++c.built;
   unit.result = unit.engine(engine_name(level))->run(unit.items, options);
   if (!unit.result.error.empty()) {
     throw std::runtime_error(unit.name() + " (" + engine_name(level) +
                              ") failed: " + unit.result.error);
   }
-  c.cycles += unit.result.cycles;
+  census(unit.kind).cycles += unit.result.cycles;
 }
 
 std::vector<tb::Txn> run_and_keep(UnitRun unit, Level level,

@@ -36,8 +36,9 @@ struct UnitRun {
   std::string name() const { return kind + "[" + material + "]"; }
 };
 
-// How many units of each kind this process has built, and how many cycles they ran: the
-// proof that a scene builds and clocks only the units it calls for.
+// How many units of each kind this process has built (engines constructed, at any level, by
+// the factory attach() gives them) and how many cycles they ran: the proof that a scene builds
+// and clocks only the units it calls for.
 struct UnitCensus {
   uint64_t built = 0;
   uint64_t cycles = 0;
@@ -46,10 +47,14 @@ UnitCensus& census(const std::string& kind);
 void reset_census();
 
 // A unit's engines and ports from a block that owns its environment.
+// Set run.kind first: each engine the factory constructs counts in that kind's census.
 template <class Block>
 void attach(UnitRun& run, std::shared_ptr<Block> block) {
   run.ports = block->ports();
-  run.engine = [block](const std::string& level) { return block->engine(level); };
+  run.engine = [block, kind = run.kind](const std::string& level) {
+    ++census(kind).built;
+    return block->engine(level);
+  };
 }
 
 // Runs a unit's engine at `level` (not ideal) over its items and records it in the census.
