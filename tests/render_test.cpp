@@ -54,12 +54,12 @@ TEST(RenderTest, PlainSceneBuildsAndClocksOnlyTheTrilinearUnits) {
   const RenderReport plain = render("plain.json", options(Level::kRtl, "plain"));
   EXPECT_EQ(census("mipgen").built, 0u);
   EXPECT_EQ(census("mipgen").cycles, 0u);
-  EXPECT_EQ(census("lowcost").built, 0u);
-  EXPECT_EQ(census("lowcost").cycles, 0u);
+  EXPECT_EQ(census("ccc_cache_bilinear").built, 0u);
+  EXPECT_EQ(census("ccc_cache_bilinear").cycles, 0u);
   EXPECT_EQ(census("footprint").built, 0u);
   EXPECT_EQ(census("footprint").cycles, 0u);
   for (const char* kind :
-       {"normal-encoder", "deflect", "coord-gen", "cube-map", "specular-combine", "material"}) {
+       {"normal_encoder", "deflect", "coord_gen", "cube_address", "specular_combine", "material"}) {
     EXPECT_EQ(census(kind).built, 0u) << kind;
   }
   EXPECT_GT(census("trilinear").built, 0u);
@@ -68,9 +68,10 @@ TEST(RenderTest, PlainSceneBuildsAndClocksOnlyTheTrilinearUnits) {
   reset_census();
   const RenderReport all = render("everything.json", options(Level::kRtl, "everything"));
   EXPECT_GT(census("mipgen").cycles, 0u);
-  EXPECT_GT(census("lowcost").cycles, 0u);
+  EXPECT_GT(census("ccc_cache_bilinear").cycles, 0u);
   EXPECT_GT(census("footprint").cycles, 0u);
-  EXPECT_TRUE(has_kind(all, "mipgen") && has_kind(all, "lowcost") && has_kind(all, "footprint"));
+  EXPECT_TRUE(has_kind(all, "mipgen") && has_kind(all, "ccc_cache_bilinear") &&
+              has_kind(all, "footprint"));
   EXPECT_EQ(plain.pixels, all.pixels);
   EXPECT_LT(plain.unit_cycles(), all.unit_cycles());
   std::cout << "plain scene: " << plain.unit_cycles()
@@ -110,25 +111,25 @@ TEST(RenderTest, DeflectionChainBuildsWhatEachMaterialNames) {
   using V = std::vector<std::string>;
   EXPECT_EQ(units["floor"], V{"trilinear[floor]"});
   // A sphere map without shading maps or bump: the vertex shade, no deflection.
-  EXPECT_EQ(units["chrome"], (V{"normal-encoder[chrome]", "coord-gen[chrome]", "trilinear[chrome]",
-                                "trilinear[chrome.environment]", "specular-combine[chrome]"}));
+  EXPECT_EQ(units["chrome"], (V{"normal_encoder[chrome]", "coord_gen[chrome]", "trilinear[chrome]",
+                                "trilinear[chrome.environment]", "specular_combine[chrome]"}));
   // The cube: its addressing unit, then one map per face a fragment sees.
   const V& gold = units["gold"];
   ASSERT_GE(gold.size(), 6u);
-  EXPECT_EQ(V(gold.begin(), gold.begin() + 4),
-            (V{"normal-encoder[gold]", "coord-gen[gold]", "trilinear[gold]", "cube-map[gold]"}));
-  EXPECT_EQ(gold.back(), "specular-combine[gold]");
+  EXPECT_EQ(V(gold.begin(), gold.begin() + 4), (V{"normal_encoder[gold]", "coord_gen[gold]",
+                                                  "trilinear[gold]", "cube_address[gold]"}));
+  EXPECT_EQ(gold.back(), "specular_combine[gold]");
   for (size_t i = 4; i + 1 < gold.size(); ++i)
     EXPECT_EQ(gold[i].rfind("trilinear[gold.environment", 0), 0u) << gold[i];
   // Everything: bump, deflection, diffuse map, cube, reflectance map.
   const V& varnish = units["varnish"];
   ASSERT_GE(varnish.size(), 9u);
   EXPECT_EQ(V(varnish.begin(), varnish.begin() + 7),
-            (V{"normal-encoder[varnish]", "trilinear[varnish.bump]", "deflect[varnish]",
-               "coord-gen[varnish]", "trilinear[varnish.diffuse]", "trilinear[varnish]",
-               "cube-map[varnish]"}));
+            (V{"normal_encoder[varnish]", "trilinear[varnish.bump]", "deflect[varnish]",
+               "coord_gen[varnish]", "trilinear[varnish.diffuse]", "trilinear[varnish]",
+               "cube_address[varnish]"}));
   EXPECT_EQ(varnish[varnish.size() - 2], "trilinear[varnish.reflectance]");
-  EXPECT_EQ(varnish.back(), "specular-combine[varnish]");
+  EXPECT_EQ(varnish.back(), "specular_combine[varnish]");
 }
 
 // Bit for bit on rtl, with the deflection cache's counts in the report: every look-up is a
@@ -184,8 +185,8 @@ TEST(RenderTest, ProceduralMaterialsBuildTheMaterialUnitOnly) {
   for (const UnitReport& u : r.units) names.push_back(u.name);
   using V = std::vector<std::string>;
   EXPECT_EQ(names,
-            (V{"trilinear[floor]", "material[wall]", "specular-combine[wall]", "material[marble]",
-               "specular-combine[marble]", "material[wood]", "specular-combine[wood]",
+            (V{"trilinear[floor]", "material[wall]", "specular_combine[wall]", "material[marble]",
+               "specular_combine[marble]", "material[wood]", "specular_combine[wood]",
                "material[fog]", "material[cloud]", "material[fire]"}));
 }
 

@@ -97,7 +97,7 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
 
   // The normal's angles.
   UnitRun encoder;
-  encoder.kind = "normal-encoder";
+  encoder.kind = "normal_encoder";
   encoder.material = mat.name;
   attach(encoder, std::make_shared<tb::NormalEncoderBlock>(tb::BlockOptions{}));
   for (size_t k = 0; k < n; ++k) {
@@ -131,7 +131,7 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
 
   // The map coordinates, from tables loaded for the camera's view frame.
   UnitRun coords;
-  coords.kind = "coord-gen";
+  coords.kind = "coord_gen";
   coords.material = mat.name;
   attach(coords, std::make_shared<tb::CoordGenBlock>(tb::BlockOptions{}));
   coords.items = tb::coord_load_items(deflect::CoordTables(
@@ -167,7 +167,7 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
   } else {
     const int face_log2 = maps.cube[0].log2_side;
     UnitRun cube;
-    cube.kind = "cube-map";
+    cube.kind = "cube_address";
     cube.material = mat.name;
     attach(cube, std::make_shared<tb::CubeAddressBlock>());
     for (const deflect::MapCoords& c : map_coords)
@@ -205,7 +205,7 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
 
   // C = C_d + R . (E | I_s).
   UnitRun combine;
-  combine.kind = "specular-combine";
+  combine.kind = "specular_combine";
   combine.material = mat.name;
   attach(combine, std::make_shared<tb::SpecularCombineBlock>());
   for (size_t k = 0; k < n; ++k) {

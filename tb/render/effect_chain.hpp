@@ -1,15 +1,15 @@
 // A material's deflection chain (001 §6, 000 §7-8), unit by unit, each unit the
 // co-simulation block at the pipeline's level, fed with the previous units' outputs:
-//   normal-encoder          N (world space, SQ2.14)      -> (phi_N, theta_N)
+//   normal_encoder          N (world space, SQ2.14)      -> (phi_N, theta_N)
 //   trilinear[.bump]        bump map at (u, v), nearest  -> D = (phi_D, theta_D)   with bump
 //   deflect                 (phi_N, theta_N), D          -> deflected (phi, theta) with bump
-//   coord-gen               (phi, theta)                 -> (uN, vN), R = (uR, vR, wR)
+//   coord_gen               (phi, theta)                 -> (uN, vN), R = (uR, vR, wR)
 //   trilinear[.diffuse]     diffuse map at (uN, vN)      -> I_d                    shading maps
 //   trilinear / footprint   the texture, eq. 5 with I_d  -> C_d
 //   trilinear[.specular] or [.environment] at (uN, vN), or
-//   cube-map + trilinear[.environment+X] at R            -> I_s or E
+//   cube_address + trilinear[.environment+X] at R            -> I_s or E
 //   trilinear[.reflectance] at (u, v, lambda)            -> R                      with a map
-//   specular-combine        C = C_d + R . (E | I_s)      (000 eq. 6-7)
+//   specular_combine        C = C_d + R . (E | I_s)      (000 eq. 6-7)
 // Only the units the material names are built. The coordinate tables are loaded through the
 // coordinate generator's write port from the camera's view frame (render/effect_maps.hpp).
 #pragma once

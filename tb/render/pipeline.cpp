@@ -239,7 +239,7 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
     }
     UnitRun run;
     if (lowcost) {
-      run.kind = "lowcost";
+      run.kind = "ccc_cache_bilinear";
       run.material = mat.name;
       const auto block = std::make_shared<tb::CccCacheBilinearBlock>(tb::BlockOptions{}, tex.ccc);
       attach(run, block);

@@ -3,7 +3,8 @@
 // never makes one:
 //   mipmaps "host"   : host pyramid                 -> trilinear (or lowcost)
 //   mipmaps "mipgen" : mipgen unit fills the banks  -> trilinear
-//   unit "lowcost"   : the CCC low-cost unit (bilinear at level 0), then eq. 5 on the host
+//   unit "lowcost"   : the CCC low-cost unit, ccc_cache_bilinear (bilinear at level 0), then
+//                      eq. 5 on the host
 //   "footprint"      : the footprint unit (000 §10): N trilinear probes per fragment, averaged;
 //                      it holds its own trilinear unit (host or mipgen pyramid as above)
 //   shading maps, "bump", "environment": the deflection chain (render/effect_chain.hpp)

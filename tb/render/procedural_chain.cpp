@@ -37,7 +37,7 @@ std::vector<uint32_t> run_procedural(const ChainInput& in, std::vector<UnitRun>&
   if (mat.sampler.combine != texram::Combine::kShade) return rgba;
 
   UnitRun shade;
-  shade.kind = "specular-combine";
+  shade.kind = "specular_combine";
   shade.material = mat.name;
   attach(shade, std::make_shared<tb::SpecularCombineBlock>());
   for (size_t k = 0; k < in.frags.size(); ++k) {

@@ -1,8 +1,8 @@
 // A procedural material's units (002 §4.2): the material unit, loaded with the material's
 // registers and colour tables through its write port, then eq. 5's product with the vertex
-// shade (combine "shade"), done by the specular-combine unit with C_d = 0 and R = I_d:
+// shade (combine "shade"), done by the specular_combine unit with C_d = 0 and R = I_d:
 //   material            (u, v, w) SolidCoord          -> P, RGB888
-//   specular-combine    C = 0 + I_d . P               (combine shade only)
+//   specular_combine    C = 0 + I_d . P               (combine shade only)
 #pragma once
 
 #include <cstdint>

@@ -78,12 +78,13 @@ std::string RenderReport::text() const {
         "  footprint assembly: {} probes for {} fragments, {:.2f} probes per fragment\n", probes,
         fragments, per(probes, fragments));
   }
-  const uint64_t hits = sum_counter(units, "lowcost", "hits"),
-                 misses = sum_counter(units, "lowcost", "misses");
+  const uint64_t hits = sum_counter(units, "ccc_cache_bilinear", "hits"),
+                 misses = sum_counter(units, "ccc_cache_bilinear", "misses");
   if (hits + misses) {
-    s += fmt::format(
-        "  low-cost unit cache: {} hits, {} misses, {} prefetches, hit rate {:.1f} %\n", hits,
-        misses, sum_counter(units, "lowcost", "prefetches"), 100 * per(hits, hits + misses));
+    s +=
+        fmt::format("  low-cost unit cache: {} hits, {} misses, {} prefetches, hit rate {:.1f} %\n",
+                    hits, misses, sum_counter(units, "ccc_cache_bilinear", "prefetches"),
+                    100 * per(hits, hits + misses));
   }
   const uint64_t map_hits = sum_counter(units, "deflect", "hits"),
                  map_misses = sum_counter(units, "deflect", "misses");
@@ -154,11 +155,11 @@ std::string RenderReport::json() const {
   j["footprint"] = {{"fragments", fp_fragments},
                     {"probes", fp_probes},
                     {"probes_per_fragment", per(fp_probes, fp_fragments)}};
-  const uint64_t hits = sum_counter(units, "lowcost", "hits"),
-                 misses = sum_counter(units, "lowcost", "misses");
+  const uint64_t hits = sum_counter(units, "ccc_cache_bilinear", "hits"),
+                 misses = sum_counter(units, "ccc_cache_bilinear", "misses");
   j["cache"] = {{"hits", hits},
                 {"misses", misses},
-                {"prefetches", sum_counter(units, "lowcost", "prefetches")},
+                {"prefetches", sum_counter(units, "ccc_cache_bilinear", "prefetches")},
                 {"hit_rate", per(hits, hits + misses)}};
   j["wall_time"] = {
       {"front_end", front_end_s}, {"textures", textures_s}, {"units", units_s}, {"total", total_s}};
