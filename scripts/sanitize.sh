@@ -61,7 +61,9 @@ ci_targets=(tmu_fixed_tests tmu_ccc_encoder_tests tmu_ccc_bilinear_tests tmu_foo
 
 # -O1 -g1 instead of RelWithDebInfo's -O2 -g: what ASan's documentation advises, and the build
 # takes about half the CPU time (the test files' gtest and JSON templates dominate it); -g1
-# keeps the file and line of every frame in a report. NDEBUG as in the main build.
+# keeps the file and line of every frame in a report. NDEBUG as in the main build. The test
+# files themselves compile at -O0 (tests/CMakeLists.txt): the --ci subset took 164 s instead of
+# 195 from a cold cache, its tests 31 s instead of 19.
 flags=(-DTMU_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG")
 if ((run_build)); then
