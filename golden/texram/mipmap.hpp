@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "formats/formats.hpp"
+#include "texram/level8.hpp"
 
 namespace tmu::texram {
 
@@ -39,19 +40,6 @@ constexpr uint32_t box_carry(uint32_t sum, int k, int k_next) {
   const int drop = k + 2 - k_next;
   return drop == 0 ? sum : (sum + (uint32_t{1} << (drop - 1))) >> drop;
 }
-
-struct Level8 {
-  uint32_t width = 0, height = 0;
-  std::vector<uint8_t> texels;  // row-major
-
-  Level8() = default;
-  Level8(uint32_t w, uint32_t h) : width(w), height(h), texels(size_t{w} * h) {}
-  uint8_t& at(uint32_t x, uint32_t y) { return texels[size_t{y} * width + x]; }
-  uint8_t at(uint32_t x, uint32_t y) const { return texels[size_t{y} * width + x]; }
-  friend bool operator==(const Level8&, const Level8&) = default;
-};
-
-using Pyramid8 = std::vector<Level8>;  // level 0 first, the 1 x 1 level last
 
 // Every level of a power-of-two level 0 (sides 1..1024; throws std::invalid_argument), under the
 // rounding rule of `carry` (0 .. kExactCarry).

@@ -1,11 +1,12 @@
 // The ideal mipmap (000 §12): every level the exact 2^l x 2^l box mean of level 0, in double
 // precision, computed from level 0 by its own code (no golden arithmetic: the truth the
-// generator's rounding rule is measured against, texram/mipmap.hpp).
+// generator's rounding rule, texram/mipmap.hpp, is measured against). It shares with golden
+// only the definition of a level's container, texram/level8.hpp.
 #pragma once
 
 #include <vector>
 
-#include "texram/mipmap.hpp"
+#include "texram/level8.hpp"
 
 namespace tmu::texram {
 

@@ -36,12 +36,6 @@ void store(const Geometry& g, BankImage& banks, int level, uint32_t x, uint32_t 
   }
 }
 
-Level8 plane_of(const ImageRgb8& image, uint8_t (*pick)(Rgb8)) {
-  Level8 l(static_cast<uint32_t>(image.width), static_cast<uint32_t>(image.height));
-  for (size_t i = 0; i < image.pixels.size(); ++i) l.texels[i] = pick(image.pixels[i]);
-  return l;
-}
-
 ccc::Vec3 as_vec(uint8_t r, uint8_t g, uint8_t b) {
   return {static_cast<double>(r), static_cast<double>(g), static_cast<double>(b)};
 }
@@ -62,6 +56,12 @@ ImageRgb8 level_image(const std::array<Pyramid8, 3>& rgb, size_t level) {
 }
 
 }  // namespace
+
+Level8 plane_of(const ImageRgb8& image, uint8_t (*pick)(Rgb8)) {
+  Level8 l(static_cast<uint32_t>(image.width), static_cast<uint32_t>(image.height));
+  for (size_t i = 0; i < image.pixels.size(); ++i) l.texels[i] = pick(image.pixels[i]);
+  return l;
+}
 
 TexramTexture texture_from_planes(TexelKind kind, const std::vector<Pyramid8>& planes,
                                   const Clut32& clut) {

@@ -48,6 +48,9 @@ constexpr uint8_t luma(Rgb8 c) {
   return static_cast<uint8_t>((77u * c.r + 150u * c.g + 29u * c.b + 128u) >> 8);
 }
 
+// One byte plane of an image: pick(pixel) per texel (a colour component, luma).
+Level8 plane_of(const ImageRgb8& image, uint8_t (*pick)(Rgb8));
+
 // Builds a texture of `kind` from an image with power-of-two sides up to 1024:
 //   luminance  the pyramid of luma(image)
 //   single     the pyramid of channel `single_channel` (0 R, 1 G, 2 B; 3 A is 255)

@@ -14,6 +14,7 @@
 #include "formats/formats.hpp"
 #include "texram/mipmap.hpp"
 #include "texram/mipmap_ideal.hpp"
+#include "texram/texture.hpp"
 #include "texsim/sweep_support.hpp"
 
 namespace tmu::texsim {
@@ -54,15 +55,6 @@ CarryBits carry_bits(int carry) {
   return b;
 }
 
-texram::Level8 plane(const ImageRgb8& image, int c) {
-  texram::Level8 l(static_cast<uint32_t>(image.width), static_cast<uint32_t>(image.height));
-  for (size_t i = 0; i < l.texels.size(); ++i) {
-    const Rgb8 p = image.pixels[i];
-    l.texels[i] = c == 0 ? p.r : c == 1 ? p.g : p.b;
-  }
-  return l;
-}
-
 }  // namespace
 
 void sweep_mipgen(const MipgenSweepArgs& args) {
@@ -76,8 +68,9 @@ void sweep_mipgen(const MipgenSweepArgs& args) {
   }
   std::vector<texram::Level8> planes;
   std::vector<std::vector<texram::LevelD>> ideal;
-  for (int c = 0; c < 3; ++c) {
-    planes.push_back(plane(image, c));
+  for (uint8_t (*pick)(Rgb8) :
+       {+[](Rgb8 p) { return p.r; }, +[](Rgb8 p) { return p.g; }, +[](Rgb8 p) { return p.b; }}) {
+    planes.push_back(texram::plane_of(image, pick));
     ideal.push_back(texram::ideal_pyramid(planes.back()));
   }
   const size_t levels = ideal[0].size() - 1;
