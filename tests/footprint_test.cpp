@@ -403,6 +403,7 @@ TEST(FootprintAccuracyTest, SetupAgainstTheIdeal) {
 // (0.5): bounded at 2.5 levels, mean error well under one.
 TEST(FootprintAccuracyTest, ColourAgainstTheIdeal) {
   const TexramTexture t = smooth(256, 256);
+  const texram::IdealTexture ideal_tex = texram::ideal_texture(t.source);
   const SamplerConfig s = sampler();
   std::mt19937 rng(12);
   std::uniform_real_distribution<double> angle(0, 2 * std::numbers::pi), ratio_log(0, 5),
@@ -420,7 +421,7 @@ TEST(FootprintAccuracyTest, ColourAgainstTheIdeal) {
     IdealConfig ic;
     ic.log2_max_probes = 4;
     if (ideal_plan(q1, q2, ic).log2_n != plan(q, config()).log2_n) continue;
-    const auto ideal = ideal_sample(t, s, ic, uv, q1, q2, 0);
+    const auto ideal = ideal_sample(ideal_tex, s, ic, uv, q1, q2, 0);
     const uint32_t golden = sample(t, s, config(), q);
     for (int c = 0; c < 3; ++c) {
       const double e = std::abs(texram::channel(golden, c) - ideal[static_cast<size_t>(c)]);
@@ -457,6 +458,7 @@ TEST(FootprintIdealTest, EllipseAxisEqualsTheLongerSideForRectangles) {
 TEST(FootprintIdealTest, AssemblyApproachesTheSupersampledFootprint) {
   const TexramTexture t = texram::import_image(
       patterns::checker(256, 256, 4, {0, 0, 0}, {255, 255, 255}), TexelKind::kTrueColour);
+  const texram::IdealTexture ideal_tex = texram::ideal_texture(t.source);
   const SamplerConfig s = sampler();
   IdealConfig one, many;
   one.log2_max_probes = 0;
@@ -469,9 +471,9 @@ TEST(FootprintIdealTest, AssemblyApproachesTheSupersampledFootprint) {
     const glm::dvec2 r1 = 24.0 * glm::dvec2(std::cos(a), std::sin(a));
     const glm::dvec2 r2 = 1.5 * glm::dvec2(-std::sin(a), std::cos(a));
     const glm::dvec2 uv{pos(rng), pos(rng)};
-    const auto ref = supersampled(t, s, uv, r1, r2, 0);
-    const auto a1 = ideal_sample(t, s, one, uv, r1, r2, 0);
-    const auto a16 = ideal_sample(t, s, many, uv, r1, r2, 0);
+    const auto ref = supersampled(ideal_tex, s, uv, r1, r2, 0);
+    const auto a1 = ideal_sample(ideal_tex, s, one, uv, r1, r2, 0);
+    const auto a16 = ideal_sample(ideal_tex, s, many, uv, r1, r2, 0);
     for (size_t c = 0; c < 3; ++c) {
       e_one += std::pow(a1[c] - ref[c], 2);
       e_many += std::pow(a16[c] - ref[c], 2);

@@ -3,8 +3,8 @@
 // independent implementation.
 //
 // Matching the two:
-// - OIIO reads a MIP-mapped OpenEXR file whose levels are our pyramid's (read back through the bank
-//   layout, which this test thereby also covers): write_oiio_mip_texture (texram/oiio_texture.hpp).
+// - OIIO reads a MIP-mapped OpenEXR file whose levels are the ideal's exact box pyramid
+//   (write_oiio_mip_texture, texram/oiio_texture.hpp), so both filter the same texels.
 // - OIIO chooses levels from derivatives and blends linearly in filter width: with the filter
 //   width f (in texels) at the first level m where f <= 1, it blends levels m - 1 and m by
 //   2f - 1. Our lambda = (m - 1) + t blends them by t, so we pass the derivative that gives
@@ -44,7 +44,8 @@ TEST(TexramIdealOiioTest, IdealTrilinearMatchesOpenImageIO) {
     c.filter = Filter::kTrilinear;
     c.border_rgba = 0;
     const std::string path = (dir / ("tex" + std::to_string(side) + ".exr")).string();
-    write_oiio_mip_texture(path, tex, c);
+    const IdealTexture ideal_tex = ideal_texture(tex.source);
+    write_oiio_mip_texture(path, ideal_tex, c);
     const int top = tex.geometry.levels() - 1;
     for (Border b : {Border::kWrap, Border::kClamp, Border::kMirror, Border::kBorder}) {
       c.border_u = c.border_v = b;
@@ -58,7 +59,7 @@ TEST(TexramIdealOiioTest, IdealTrilinearMatchesOpenImageIO) {
         const double u = std::uniform_real_distribution<double>(-1.5 * side, 2.5 * side)(rng);
         const double v = std::uniform_real_distribution<double>(-1.5 * side, 2.5 * side)(rng);
         const double lambda = std::uniform_real_distribution<double>(-1.0, top + 1.0)(rng);
-        const auto ideal = ideal_sample(tex, c, u, v, lambda);
+        const auto ideal = ideal_sample(ideal_tex, c, u, v, lambda);
         const float d = oiio_trilinear_derivative(lambda, top, side);
         float got[4] = {0, 0, 0, 0};
         ASSERT_TRUE(ts->texture(OIIO::ustring(path), opt, static_cast<float>(u / side),

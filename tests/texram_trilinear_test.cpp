@@ -2,9 +2,13 @@
 // outside, every configuration, the blend and combine rules, and its error against the ideal.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <numeric>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "common/test_patterns.hpp"
 #include "texram/trilinear.hpp"
@@ -225,23 +229,40 @@ TEST(TexramTrilinearTest, CombineSelectsOneConstantOrShade) {
 
 // --- error against the ideal model ---------------------------------------------------------
 
+// Per-channel errors, in 8-bit levels.
 struct ErrorStats {
-  double max = 0, sum = 0;
-  uint64_t n = 0;
-  void add(double e) {
-    max = std::max(max, e);
-    sum += e;
-    ++n;
+  std::vector<double> errors;
+  void add(double e) { errors.push_back(e); }
+  void add(const ErrorStats& o) { errors.insert(errors.end(), o.errors.begin(), o.errors.end()); }
+  double max() const {
+    return errors.empty() ? 0 : *std::max_element(errors.begin(), errors.end());
   }
-  double mean() const { return n ? sum / double(n) : 0; }
+  double mean() const {
+    return errors.empty()
+               ? 0
+               : std::accumulate(errors.begin(), errors.end(), 0.0) / double(errors.size());
+  }
+  double share_above(double bound) const {
+    const auto n = std::count_if(errors.begin(), errors.end(), [&](double e) { return e > bound; });
+    return errors.empty() ? 0 : double(n) / double(errors.size());
+  }
+  double percentile(double p) const {  // p in [0, 1]
+    if (errors.empty()) return 0;
+    std::vector<double> v = errors;
+    const auto k = static_cast<size_t>(p * double(v.size() - 1));
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+    return v[k];
+  }
 };
 
-// Requests on the port grid (SQ16.8, SQ6.8) so the only differences are the unit's internal
-// widths and its one rounding.
+// Requests on the port grid (SQ16.8, SQ6.8), a texture wide on either side and lambda below 0
+// and above the top, so the only differences are the unit's internal widths, its pyramid and
+// its one rounding.
 ErrorStats golden_vs_ideal(const TexramTexture& t, const SamplerConfig& c, uint32_t seed,
                            int count) {
   std::mt19937 rng(seed);
   ErrorStats e;
+  const IdealTexture ideal_tex = ideal_texture(t.source);
   const int w = static_cast<int>(t.geometry.texel_width(0)),
             h = static_cast<int>(t.geometry.texel_height(0));
   for (int i = 0; i < count; ++i) {
@@ -250,48 +271,69 @@ ErrorStats golden_vs_ideal(const TexramTexture& t, const SamplerConfig& c, uint3
                     static_cast<int32_t>(rng() % ((t.geometry.levels() + 2) * kOne)) - kOne,
                     static_cast<uint32_t>(rng())};
     const uint32_t g = sample(t, c, r);
-    const auto ideal = ideal_sample(t, c, r.u / 256.0, r.v / 256.0, r.lambda / 256.0, r.shade);
+    const auto ideal =
+        ideal_sample(ideal_tex, c, r.u / 256.0, r.v / 256.0, r.lambda / 256.0, r.shade);
     for (int ch = 0; ch < 4; ++ch) e.add(std::abs(channel(g, ch) - ideal[static_cast<size_t>(ch)]));
   }
   return e;
 }
 
-// Bounds, in 8-bit levels, at the default widths (S = W = L = 8):
-// - nearest: the same texel as the ideal, exactly (0).
-// - bilinear: the weights are the coordinate's fraction at the level, truncated to 8 bits; at
-//   level d the port's 8 fraction bits become 8 + d, so a weight can be short by up to 2^-8
-//   (< 1 weight step). Each of the two lerps then moves by at most 255 * 2^-8 < 1, and the
-//   one rounding adds 0.5: bound 0.5 + 2 * 255/256 < 2.5.
-// - trilinear: the same in each level; the level weight is exact (lambda is on the 8-bit
-//   grid) and the level blend is a convex combination: bound 2.5 as well.
-// - combine (shade, constant): scales that error by at most 1 and rounds once more: + 0.5.
-// - the mean error: a correctly rounded result errs uniformly within +-0.5, mean 0.25 at most;
-//   a bias (truncating instead of rounding) would push it toward 0.5; the combine's second
-//   rounding adds up to 0.25 more. Measured: max 0.75, mean 0.10-0.15 without the combine.
-TEST(TexramTrilinearTest, GoldenErrorAgainstIdealIsBounded) {
-  const double bound[3] = {0.0, 2.5, 2.5};
+// The textures of the bound: a smooth field, noise (the largest texel differences) and a
+// black-and-white checker of 3-texel squares (box means that are neither 0 nor 255 next to
+// ones that are: the pyramid's rounding and the steepest edges at once), 64 x 16 (the non-square
+// levels too).
+std::vector<std::pair<const char*, ImageRgb8>> bound_images() {
+  return {{"smooth", patterns::smooth_field(64, 16, 3)},
+          {"noise", patterns::noise(64, 16, 4)},
+          {"checker", patterns::checker(64, 16, 3, {0, 0, 0}, {255, 255, 255})}};
+}
+
+// Golden against the independent ideal (texram/trilinear_ideal.hpp: the exact box pyramid of
+// level 0, its own addressing, borders and decoding), per channel in 8-bit levels, at the
+// default widths (S = W = L = 8). Every request is within 2, because the error has three parts:
+// - the texels: level 0 is the source's own; a level above 0 of a luminance, single or
+//   true-colour texture is golden's pyramid, each texel within 0.5 of the exact box mean
+//   (carried sums, texram/mipmap.hpp); index and CCC levels are given, so exact: <= 0.5, and
+//   the filter's convex weights keep it so;
+// - the weights: the coordinate is rounded to 8 fraction bits at the level, so each weight is
+//   within 2^-9 of the exact one, and a lerp between texels at most 255 apart moves by at most
+//   255 / 512 per axis: <= 0.996 for both; lambda is on the port's 8-bit grid, the level weight
+//   exact (L = W = 8), and the level blend convex: nothing more;
+// - the one rounding of the result: <= 0.5.
+// 0.5 + 0.996 + 0.5 < 2. Nearest reads one texel: its 0.5. The combine (shade, constant) scales
+// by at most 1 and rounds once more: + 0.5. The three parts reach their ends together only on
+// steep edges whose texels err the same way, so almost every request is within 1: the issue asks
+// 99.9 %, measured here per texel kind and border mode over the three textures, every filter
+// and both combines (with the combine's extra rounding counted against the same 1).
+TEST(TexramTrilinearTest, GoldenIsWithinTwoOfTheIdealAndWithinOneAlmostAlways) {
+  const double bound[3] = {0.5, 2.0, 2.0};
   for (TexelKind kind : {TexelKind::kLuminance, TexelKind::kIndex, TexelKind::kTrueColour,
                          TexelKind::kSingle, TexelKind::kCcc}) {
-    for (bool noisy : {false, true}) {  // noise has the largest texel differences: the worst case
-      const TexramTexture t =
-          noisy ? import_image(patterns::noise(64, 16, 4), kind, 1) : texture(kind, 64, 16);
-      for (Filter f : {Filter::kNearest, Filter::kBilinear, Filter::kTrilinear}) {
-        for (Border b : {Border::kWrap, Border::kClamp, Border::kBorder, Border::kMirror}) {
+    std::vector<TexramTexture> textures;
+    for (const auto& [label, image] : bound_images())
+      textures.push_back(import_image(image, kind, 1));
+    for (Border b : {Border::kWrap, Border::kClamp, Border::kBorder, Border::kMirror}) {
+      ErrorStats all;
+      for (const TexramTexture& t : textures) {
+        for (Filter f : {Filter::kNearest, Filter::kBilinear, Filter::kTrilinear}) {
           for (Combine m : {Combine::kOne, Combine::kShade}) {
             SamplerConfig c = config(f, b, kind);
             c.combine = m;
             const ErrorStats e = golden_vs_ideal(t, c, 11, 2000);
-            EXPECT_LE(e.max, bound[static_cast<int>(f)] + (m == Combine::kOne ? 0.0 : 0.5))
+            EXPECT_LE(e.max(), bound[static_cast<int>(f)] + (m == Combine::kOne ? 0.0 : 0.5))
                 << name(kind) << " " << name(f) << " " << name(b) << " " << name(m);
-            EXPECT_LE(e.mean(), m == Combine::kOne ? 0.25 : 0.5)
+            // A correctly rounded result errs uniformly within +-0.5 (mean 0.25); a bias
+            // (truncation) would push the mean toward 0.5, the combine's rounding adds 0.25.
+            EXPECT_LE(e.mean(), m == Combine::kOne ? 0.3 : 0.5)
                 << name(kind) << " " << name(f) << " " << name(b) << " " << name(m);
-            if (b == Border::kWrap && m == Combine::kOne) {
-              std::cout << name(kind) << (noisy ? " noise " : " smooth ") << name(f) << ": max "
-                        << e.max << ", mean " << e.mean() << "\n";
-            }
+            all.add(e);
           }
         }
       }
+      EXPECT_LE(all.share_above(1.0), 0.001) << name(kind) << " " << name(b);
+      std::cout << name(kind) << " " << name(b) << ": 99.9th percentile " << all.percentile(0.999)
+                << ", max " << all.max() << ", above 1: " << 100 * all.share_above(1.0)
+                << " %, mean " << all.mean() << "\n";
     }
   }
 }
@@ -299,6 +341,7 @@ TEST(TexramTrilinearTest, GoldenErrorAgainstIdealIsBounded) {
 // At level 0 on the port grid the weights are exact: the one rounding is the only error.
 TEST(TexramTrilinearTest, AtLevelZeroTheOnlyErrorIsTheRounding) {
   const TexramTexture t = import_image(patterns::noise(32, 32, 8), TexelKind::kTrueColour);
+  const IdealTexture ideal_tex = ideal_texture(t.source);
   std::mt19937 rng(12);
   for (Filter f : {Filter::kBilinear, Filter::kTrilinear}) {
     ErrorStats e;
@@ -307,13 +350,13 @@ TEST(TexramTrilinearTest, AtLevelZeroTheOnlyErrorIsTheRounding) {
                       static_cast<int32_t>(rng() % (32 * kOne)),
                       -static_cast<int32_t>(rng() % kOne), 0};
       const uint32_t g = sample(t, config(f, Border::kWrap, TexelKind::kTrueColour), r);
-      const auto ideal = ideal_sample(t, config(f, Border::kWrap, TexelKind::kTrueColour),
+      const auto ideal = ideal_sample(ideal_tex, config(f, Border::kWrap, TexelKind::kTrueColour),
                                       r.u / 256.0, r.v / 256.0, r.lambda / 256.0);
       for (int ch = 0; ch < 4; ++ch)
         e.add(std::abs(channel(g, ch) - ideal[static_cast<size_t>(ch)]));
     }
-    EXPECT_LE(e.max, 0.5) << name(f);
-    std::cout << name(f) << " at level 0: max " << e.max << ", mean " << e.mean() << "\n";
+    EXPECT_LE(e.max(), 0.5) << name(f);
+    std::cout << name(f) << " at level 0: max " << e.max() << ", mean " << e.mean() << "\n";
   }
 }
 

@@ -53,6 +53,7 @@
 #include <string_view>
 #include <vector>
 
+#include "footprint/q_rule.hpp"
 #include "texram/sampler_config.hpp"
 #include "texram/texture.hpp"
 #include "texram/trilinear.hpp"
@@ -60,11 +61,6 @@
 namespace tmu::footprint {
 
 // The edge length q of eq. 19.
-enum class QRule : uint8_t {
-  kHeights,  // min(|r1|, |r2|, d1, d2) with d1, d2 the parallelogram's heights
-  kSides,    // min(|r1|, |r2|): the text's two surviving terms only
-};
-
 // The setup's internal precision.
 struct Widths {
   // D: significant bits of the derivative components, 6..24. The shorter vector vanishes only

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "texram/trilinear_ideal.hpp"
 
 namespace tmu::footprint {
 namespace {
@@ -60,7 +59,7 @@ IdealPlan ideal_plan(glm::dvec2 r1, glm::dvec2 r2, const IdealConfig& config) {
   return p;
 }
 
-std::array<double, 4> ideal_sample(const texram::TexramTexture& texture,
+std::array<double, 4> ideal_sample(const texram::IdealTexture& texture,
                                    const texram::SamplerConfig& sampler, const IdealConfig& config,
                                    glm::dvec2 uv, glm::dvec2 r1, glm::dvec2 r2, uint32_t shade) {
   const IdealPlan p = ideal_plan(r1, r2, config);
@@ -77,7 +76,7 @@ std::array<double, 4> ideal_sample(const texram::TexramTexture& texture,
   return sum;
 }
 
-std::array<double, 4> supersampled(const texram::TexramTexture& texture,
+std::array<double, 4> supersampled(const texram::IdealTexture& texture,
                                    const texram::SamplerConfig& sampler, glm::dvec2 uv,
                                    glm::dvec2 r1, glm::dvec2 r2, uint32_t shade) {
   static constexpr int kMaxGrid = 64;

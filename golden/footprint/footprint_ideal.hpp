@@ -1,6 +1,7 @@
 // The ideal (double precision) footprint assembly: the golden model's rules (footprint.hpp)
 // with exact lengths, logarithms, probe positions and samples (texram::ideal_sample), to
-// measure what the setup's widths cost. Two references the hardware does not build:
+// measure what the setup's widths cost. Its own code throughout: it shares with golden only the
+// q rule's definition (q_rule.hpp) and what the ideal trilinear unit shares. Two references the hardware does not build:
 // - Direction::kEllipseAxis, the exact marching direction of eq. 12-18: the main axis of the
 //   ellipse x^T (M^-1)^T M^-1 x = 1, M = [r1 r2]. Its semi-axes are M's singular values
 //   a >= b, the axis the eigenvector of (M^-1)^T M^-1 det(M)^2 with the smaller eigenvalue
@@ -13,7 +14,8 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
-#include "footprint/footprint.hpp"
+#include "footprint/q_rule.hpp"
+#include "texram/trilinear_ideal.hpp"
 
 namespace tmu::footprint {
 
@@ -36,11 +38,11 @@ struct IdealPlan {
 IdealPlan ideal_plan(glm::dvec2 r1, glm::dvec2 r2, const IdealConfig& config);
 
 // u, v in texels of level 0. Returns RGBA, 0..255 each.
-std::array<double, 4> ideal_sample(const texram::TexramTexture& texture,
+std::array<double, 4> ideal_sample(const texram::IdealTexture& texture,
                                    const texram::SamplerConfig& sampler, const IdealConfig& config,
                                    glm::dvec2 uv, glm::dvec2 r1, glm::dvec2 r2, uint32_t shade);
 
-std::array<double, 4> supersampled(const texram::TexramTexture& texture,
+std::array<double, 4> supersampled(const texram::IdealTexture& texture,
                                    const texram::SamplerConfig& sampler, glm::dvec2 uv,
                                    glm::dvec2 r1, glm::dvec2 r2, uint32_t shade);
 

@@ -14,7 +14,7 @@
 
 #include "texram/sampler_config.hpp"
 #include "texram/texture.hpp"
-#include "texram/trilinear_ideal.hpp"
+#include "texram/trilinear.hpp"
 
 namespace tmu::texram {
 

@@ -12,6 +12,7 @@
 #include "texram/oiio_sampler.hpp"  // make_oiio_texture, the anisotropic sampler
 #include "texram/sampler_config.hpp"
 #include "texram/texture.hpp"
+#include "texram/trilinear_ideal.hpp"
 
 namespace tmu::texram {
 
@@ -19,11 +20,14 @@ namespace tmu::texram {
 // only with a (0, 0, 0, 0) border colour).
 OIIO::TextureOpt::Wrap oiio_wrap(Border border);
 
-// Every level of `texture` (our pyramid, read back through the bank layout as `config` reads
-// its texels) written as one MIP level of a tiled float OpenEXR file, so OIIO filters the same
-// texels as our models (Debian's OpenImageIO writes no MIP-mapped TIFF; float keeps every 8-bit
-// value exact). Throws InputError naming `path` when OpenImageIO fails.
+// Every level of `texture` written as one MIP level of a tiled float OpenEXR file, so OIIO
+// filters the same texels as our models (Debian's OpenImageIO writes no MIP-mapped TIFF; float
+// keeps every 8-bit value exact): golden's pyramid read back through the bank layout as
+// `config` reads its texels, or the ideal's exact levels. Throws InputError naming `path` when
+// OpenImageIO fails.
 void write_oiio_mip_texture(const std::string& path, const TexramTexture& texture,
+                            const SamplerConfig& config);
+void write_oiio_mip_texture(const std::string& path, const IdealTexture& texture,
                             const SamplerConfig& config);
 
 // The derivative (normalized texture units per pixel, the same for d/dx and d/dy) that makes

@@ -55,6 +55,13 @@ ImageRgb8 level_image(const std::array<Pyramid8, 3>& rgb, size_t level) {
   return img;
 }
 
+// A texture whose levels above 0 are the box pyramid of level 0: its source keeps level 0 only.
+TexramTexture from_level0(TexramTexture t) {
+  for (Pyramid8& plane : t.source.planes) plane.resize(1);
+  t.source.box_levels = true;
+  return t;
+}
+
 }  // namespace
 
 Level8 plane_of(const ImageRgb8& image, uint8_t (*pick)(Rgb8)) {
@@ -70,7 +77,7 @@ TexramTexture texture_from_planes(TexelKind kind, const std::vector<Pyramid8>& p
   const Level8& l0 = planes.front().front();
   const Geometry g(log2_side(l0.width, "width"), log2_side(l0.height, "height"),
                    static_cast<int>(planes.size()));
-  TexramTexture tex{kind, g, empty_banks(g), clut};
+  TexramTexture tex{kind, g, empty_banks(g), clut, {kind, l0.width, l0.height, planes, false, false, clut}};
   for (size_t p = 0; p < planes.size(); ++p) {
     if (planes[p].size() != static_cast<size_t>(g.levels()) ||
         planes[p].front().width != l0.width || planes[p].front().height != l0.height) {
@@ -94,22 +101,27 @@ TexramTexture texture_from_ccc(const std::vector<ccc::Texture>& levels) {
                    /*block_grid=*/true);
   if (levels.size() != static_cast<size_t>(g.levels()))
     throw std::invalid_argument("texture_from_ccc: level count");
-  TexramTexture tex{TexelKind::kCcc, g, empty_banks(g), {}};
+  TexramTexture tex{TexelKind::kCcc, g, empty_banks(g), {}, {}};
   for (size_t i = 0; i < 256; ++i) {
     const Rgb8 c = levels[0].clut[i];
     tex.clut[i] = rgba(c.r, c.g, c.b, 255);
   }
+  tex.source = {TexelKind::kCcc, levels[0].width, levels[0].height, {}, false, true, tex.clut};
+  tex.source.planes.resize(formats::kPlanes);
   for (int l = 0; l < g.levels(); ++l) {
     const ccc::Texture& t = levels[static_cast<size_t>(l)];
     if (t.width != g.texel_width(l) || t.height != g.texel_height(l) || t.clut != levels[0].clut) {
       throw std::invalid_argument("texture_from_ccc: level " + std::to_string(l) +
                                   " has the wrong size or CLUT");
     }
+    for (Pyramid8& plane : tex.source.planes) plane.emplace_back(t.blocks_wide(), t.blocks_high());
     for (uint32_t by = 0; by < t.blocks_high(); ++by) {
       for (uint32_t bx = 0; bx < t.blocks_wide(); ++bx) {
         const uint32_t word = t.block_word(bx, by);
         for (int p = 0; p < formats::kPlanes; ++p) {
-          store(g, tex.banks, l, bx, by, p, static_cast<uint8_t>(word >> (24 - 8 * p)));
+          const auto byte = static_cast<uint8_t>(word >> (24 - 8 * p));
+          store(g, tex.banks, l, bx, by, p, byte);
+          tex.source.planes[static_cast<size_t>(p)].back().at(bx, by) = byte;
         }
       }
     }
@@ -139,18 +151,19 @@ TexramTexture import_image(const ImageRgb8& image, TexelKind kind, int single_ch
   log2_side(h, "height");
   switch (kind) {
     case TexelKind::kLuminance:
-      return texture_from_planes(kind, {build_pyramid(plane_of(image, luma))});
+      return from_level0(texture_from_planes(kind, {build_pyramid(plane_of(image, luma))}));
     case TexelKind::kSingle: {
       if (single_channel < 0 || single_channel > 3)
         throw std::invalid_argument("single channel must be 0..3");
       if (single_channel == 3)
-        return texture_from_planes(kind, {build_pyramid(constant_plane(w, h, 255))});
-      return texture_from_planes(kind, {rgb_pyramids(image)[static_cast<size_t>(single_channel)]});
+        return from_level0(texture_from_planes(kind, {build_pyramid(constant_plane(w, h, 255))}));
+      return from_level0(
+          texture_from_planes(kind, {rgb_pyramids(image)[static_cast<size_t>(single_channel)]}));
     }
     case TexelKind::kTrueColour: {
       auto rgb = rgb_pyramids(image);
-      return texture_from_planes(
-          kind, {rgb[0], rgb[1], rgb[2], build_pyramid(constant_plane(w, h, 255))});
+      return from_level0(texture_from_planes(
+          kind, {rgb[0], rgb[1], rgb[2], build_pyramid(constant_plane(w, h, 255))}));
     }
     case TexelKind::kIndex: {
       std::vector<ccc::WeightedColour> colours;

@@ -13,6 +13,7 @@
 #include "texram/layout.hpp"
 #include "texram/mipmap.hpp"
 #include "texram/sampler_config.hpp"
+#include "texram/source_texels.hpp"
 
 namespace tmu::texram {
 
@@ -24,6 +25,7 @@ struct TexramTexture {
   Geometry geometry{0, 0};
   BankImage banks;
   Clut32 clut{};
+  SourceTexels source;  // what it was made from: the ideal models read this, not the banks
 
   uint8_t cell(int level, uint32_t x, uint32_t y, int plane = 0) const {
     const BankCell c = geometry.cell(level, x, y, plane);

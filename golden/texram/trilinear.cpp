@@ -70,10 +70,15 @@ struct Axis {
 };
 
 // Taps of one axis at `level`: bilinear (t0, t0 + 1, weight) or nearest (t0 only).
+// Bilinear rounds the coordinate to S fraction bits at the level (half up): the weights are then
+// within half a step of the exact ones, which bounds the sample's error by 2 levels against the
+// ideal (tests/texram_trilinear_test.cpp); truncating them erred by up to a whole step, toward
+// the first tap, at every level above 0. Nearest takes the texel the coordinate is in: floor.
 Axis axis_taps(int32_t coord, int level, bool nearest, const Widths& widths) {
   const int s = widths.sub_texel;
-  const int64_t c = floor_shift(coord, kPortFrac - s + level);  // S fraction bits at `level`
-  if (nearest) return {floor_shift(c, s), 0};
+  const int drop = kPortFrac - s + level;  // S fraction bits at `level`
+  if (nearest) return {floor_shift(coord, drop + s), 0};
+  const int64_t c = fx::shift_right_round(coord, drop, fx::Round::kHalfUp);
   const int64_t sc = c - (int64_t{1} << (s - 1));  // minus half a texel
   const int64_t t0 = floor_shift(sc, s);
   return {t0, to_width(static_cast<uint32_t>(sc - (t0 << s)), s, widths.weight)};
@@ -225,6 +230,21 @@ uint32_t sample(const TexramTexture& texture, const SamplerConfig& config, const
   }
   if (plan_out) *plan_out = plan;
   return combine(blend_taps(plan, colours, config.widths), config, request.shade);
+}
+
+uint32_t texel_rgba(const TexramTexture& t, const SamplerConfig& config, int level, uint32_t x,
+                    uint32_t y) {
+  const Geometry& g = t.geometry;
+  Tap tap;
+  tap.x = x;
+  tap.y = y;
+  tap.cell = g.block_grid() ? g.cell(level, x >> 2, y >> 2) : g.cell(level, x, y);
+  AccessData data{};
+  for (int p = 0; p < g.planes(); ++p) {
+    data[tap.cell.bank][static_cast<size_t>(p)] =
+        t.banks[tap.cell.bank][tap.cell.address + static_cast<uint32_t>(p)];
+  }
+  return tap_colour(tap, data, t.kind, config, t.clut);
 }
 
 }  // namespace tmu::texram

@@ -82,6 +82,11 @@ uint32_t combine(uint32_t texture_rgba, const SamplerConfig& config, uint32_t sh
 // The bytes the access reads from the texture's banks.
 AccessData read_access(const TexramTexture& texture, const SamplePlan& plan);
 
+// The RGBA8888 colour of texel (x, y) of `level` (coordinates inside the level), read from the
+// banks as a tap of the unit reads it.
+uint32_t texel_rgba(const TexramTexture& texture, const SamplerConfig& config, int level,
+                    uint32_t x, uint32_t y);
+
 // The whole unit: plan, read, convert, blend, combine. Returns RGBA8888.
 uint32_t sample(const TexramTexture& texture, const SamplerConfig& config, const Request& request,
                 SamplePlan* plan_out = nullptr);

@@ -2,17 +2,35 @@
 
 #include <algorithm>
 #include <cmath>
-
-#include "texram/trilinear.hpp"
+#include <stdexcept>
+#include <string>
 
 namespace tmu::texram {
 namespace {
+
+uint32_t level_side(uint32_t side, int level) { return std::max(side >> level, 1u); }
+
+std::array<double, 4> unpack(uint32_t c) {
+  return {double(channel(c, 0)), double(channel(c, 1)), double(channel(c, 2)),
+          double(channel(c, 3))};
+}
+
+// Byte `x, y` of a level given as bytes (exact integers in double).
+uint32_t byte_at(const LevelD& level, uint32_t x, uint32_t y) {
+  return static_cast<uint32_t>(level.at(x, y));
+}
+
+LevelD as_double(const Level8& l) {
+  LevelD d{l.width, l.height, std::vector<double>(l.texels.begin(), l.texels.end())};
+  return d;
+}
 
 struct Resolved {
   bool outside;
   uint32_t x;
 };
 
+// OpenGL's border operators on an integer texel coordinate x of a level n texels wide.
 Resolved resolve(double xf, uint32_t n, Border border) {
   const auto x = static_cast<int64_t>(xf);  // xf is an integer value
   const auto nn = static_cast<int64_t>(n);
@@ -31,21 +49,15 @@ Resolved resolve(double xf, uint32_t n, Border border) {
   return {true, 0};
 }
 
-std::array<double, 4> unpack(uint32_t c) {
-  return {double(channel(c, 0)), double(channel(c, 1)), double(channel(c, 2)),
-          double(channel(c, 3))};
-}
-
-std::array<double, 4> level_sample(const TexramTexture& t, const SamplerConfig& config, double u,
+std::array<double, 4> level_sample(const IdealTexture& t, const SamplerConfig& config, double u,
                                    double v, int l, bool nearest) {
   const double scale = std::ldexp(1.0, -l);
   const double ul = u * scale, vl = v * scale;
-  const Geometry& g = t.geometry;
+  const uint32_t w = level_side(t.width, l), h = level_side(t.height, l);
   auto texel = [&](double x, double y) {
-    const Resolved rx = resolve(x, g.texel_width(l), config.border_u);
-    const Resolved ry = resolve(y, g.texel_height(l), config.border_v);
+    const Resolved rx = resolve(x, w, config.border_u), ry = resolve(y, h, config.border_v);
     if (rx.outside || ry.outside) return unpack(config.border_rgba);
-    return unpack(texel_rgba(t, config, l, rx.x, ry.x));
+    return ideal_texel(t, config, l, rx.x, ry.x);
   };
   if (nearest) return texel(std::floor(ul), std::floor(vl));
   const double sx = ul - 0.5, sy = vl - 0.5;
@@ -62,24 +74,70 @@ std::array<double, 4> level_sample(const TexramTexture& t, const SamplerConfig& 
 
 }  // namespace
 
-uint32_t texel_rgba(const TexramTexture& t, const SamplerConfig& config, int level, uint32_t x,
-                    uint32_t y) {
-  const Geometry& g = t.geometry;
-  Tap tap;
-  tap.x = x;
-  tap.y = y;
-  tap.cell = g.block_grid() ? g.cell(level, x >> 2, y >> 2) : g.cell(level, x, y);
-  AccessData data{};
-  for (int p = 0; p < g.planes(); ++p) {
-    data[tap.cell.bank][static_cast<size_t>(p)] =
-        t.banks[tap.cell.bank][tap.cell.address + static_cast<uint32_t>(p)];
+IdealTexture ideal_texture(const SourceTexels& s) {
+  const auto fail = [](const std::string& why) {
+    throw std::invalid_argument("ideal_texture: " + why);
+  };
+  if (s.planes.empty() || s.planes[0].empty() || s.width == 0 || s.height == 0)
+    fail("no texels");
+  const bool coded = s.kind == TexelKind::kIndex || s.kind == TexelKind::kCcc;
+  if (s.box_levels && coded) fail("box levels of indices or CCC blocks have no mean");
+  IdealTexture t{s.kind, s.width, s.height, s.block_grid, {}, s.clut};
+  for (const Pyramid8& plane : s.planes) {
+    std::vector<LevelD> levels;
+    if (s.box_levels) {
+      levels = ideal_pyramid(plane[0]);
+    } else {
+      for (const Level8& l : plane) levels.push_back(as_double(l));
+    }
+    t.planes.push_back(std::move(levels));
   }
-  return tap_colour(tap, data, t.kind, config, t.clut);
+  for (const auto& levels : t.planes) {
+    if (levels.size() != t.planes[0].size()) fail("the planes have different level counts");
+    for (size_t l = 0; l < levels.size(); ++l) {
+      const int li = static_cast<int>(l);
+      const uint32_t w = level_side(s.width, li), h = level_side(s.height, li);
+      const uint32_t gw = s.block_grid ? (w + 3) / 4 : w, gh = s.block_grid ? (h + 3) / 4 : h;
+      if (levels[l].width != gw || levels[l].height != gh)
+        fail("level " + std::to_string(l) + " has the wrong size");
+    }
+  }
+  return t;
 }
 
-std::array<double, 4> ideal_sample(const TexramTexture& t, const SamplerConfig& config, double u,
+std::array<double, 4> ideal_texel(const IdealTexture& t, const SamplerConfig& config, int level,
+                                  uint32_t x, uint32_t y) {
+  const auto& p = t.planes;
+  const auto l = static_cast<size_t>(level);
+  switch (t.kind) {
+    case TexelKind::kLuminance: {
+      const double v = p[0][l].at(x, y);
+      return {v, v, v, 255};
+    }
+    case TexelKind::kSingle: {  // the component on its channel; alpha 255 unless it is alpha
+      std::array<double, 4> c{0, 0, 0, 255};
+      c[static_cast<size_t>(config.single_channel)] = p[0][l].at(x, y);
+      return c;
+    }
+    case TexelKind::kIndex:
+      return unpack(t.clut[byte_at(p[0][l], x, y)]);
+    case TexelKind::kTrueColour:
+      return {p[0][l].at(x, y), p[1][l].at(x, y), p[2][l].at(x, y), p[3][l].at(x, y)};
+    case TexelKind::kCcc: {
+      // The block word (000 §3, Fig. 5): CLUT index a in bits 31:24, b in 23:16, and 16
+      // decision bits; bit 4 (y mod 4) + (x mod 4) set takes b for that texel.
+      const uint32_t bx = x / 4, by = y / 4;
+      const uint32_t bits = byte_at(p[2][l], bx, by) << 8 | byte_at(p[3][l], bx, by);
+      const bool take_b = (bits >> (4 * (y % 4) + x % 4)) & 1;
+      return unpack(t.clut[byte_at(p[take_b ? 1 : 0][l], bx, by)]);
+    }
+  }
+  return {};
+}
+
+std::array<double, 4> ideal_sample(const IdealTexture& t, const SamplerConfig& config, double u,
                                    double v, double lambda, uint32_t shade) {
-  const int top = t.geometry.levels() - 1;
+  const int top = t.levels() - 1;
   std::array<double, 4> out{};
   if (config.filter == Filter::kTrilinear) {
     const double lc = std::clamp(lambda, 0.0, double(top));

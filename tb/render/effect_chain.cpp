@@ -223,7 +223,7 @@ std::vector<dvec4> ideal_effect_chain(const ChainInput& in,
   const EffectMaps& maps = in.texture.effects;
   const deflect::ViewFrame view = camera_view_frame(in.scene.camera);
   const auto sample = [](const MapTexture& map, double u, double v, double lambda) {
-    const auto s = texram::ideal_sample(*map.texture, map.sampler, u, v, lambda);
+    const auto s = texram::ideal_sample(*map.ideal, map.sampler, u, v, lambda);
     return dvec4(s[0], s[1], s[2], s[3]);
   };
   const auto sphere_sample = [&](const MapTexture& map, const deflect::ideal::Coords& c) {

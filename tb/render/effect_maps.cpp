@@ -50,6 +50,7 @@ MapTexture map_texture(const ImageRgb8& image, const texram::SamplerConfig& samp
   MapTexture m;
   m.texture = std::make_shared<const texram::TexramTexture>(
       texram::import_image(image, texram::TexelKind::kTrueColour));
+  m.ideal = std::make_shared<const texram::IdealTexture>(texram::ideal_texture(m.texture->source));
   m.sampler = sampler;
   m.log2_side = std::countr_zero(static_cast<unsigned>(image.width));
   return m;

@@ -14,6 +14,7 @@
 #include "scene/scene.hpp"
 #include "texram/sampler_config.hpp"
 #include "texram/texture.hpp"
+#include "texram/trilinear_ideal.hpp"
 
 namespace tmu::render {
 
@@ -22,6 +23,7 @@ inline constexpr deflect::SphereGrid kChainGrid{9};
 
 struct MapTexture {
   std::shared_ptr<const texram::TexramTexture> texture;
+  std::shared_ptr<const texram::IdealTexture> ideal;  // its source, exactly (the ideal chain)
   texram::SamplerConfig sampler;
   int log2_side = 0;  // sphere maps and cube faces (square)
   explicit operator bool() const { return texture != nullptr; }

@@ -72,9 +72,9 @@ glm::dvec4 ideal_texture(const host::Material& mat, const MaterialTexture& tex,
   if (mat.footprint) {
     const footprint::IdealConfig ic{mat.footprint->log2_max_probes, mat.footprint->q_rule,
                                     footprint::Direction::kLongerSide};
-    s = footprint::ideal_sample(*tex.texram, sampler, ic, f.uv, f.r1, f.r2, shade);
+    s = footprint::ideal_sample(*tex.ideal, sampler, ic, f.uv, f.r1, f.r2, shade);
   } else {
-    s = texram::ideal_sample(*tex.texram, sampler, f.uv.x, f.uv.y, f.lambda, shade);
+    s = texram::ideal_sample(*tex.ideal, sampler, f.uv.x, f.uv.y, f.lambda, shade);
   }
   return {s[0], s[1], s[2], s[3]};
 }
@@ -113,6 +113,8 @@ Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level
             mat.mipmaps == host::Material::Mipmaps::kMipgen && level != Level::kIdeal;
         mt.size = {static_cast<int>(tex.geometry.texel_width(0)),
                    static_cast<int>(tex.geometry.texel_height(0))};
+        if (level == Level::kIdeal)
+          mt.ideal = std::make_shared<const texram::IdealTexture>(texram::ideal_texture(tex.source));
         mt.texram = std::make_shared<const texram::TexramTexture>(std::move(tex));
       }
     } catch (const InputError& e) {
@@ -128,12 +130,12 @@ Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level
 void Pipeline::generate_mipmaps(size_t m) {
   // The real-time mipmap generator (000 §12) writes every level into the banks from the
   // level-0 texels, one stream per byte plane; the trilinear unit then reads what it wrote.
-  // (Ideal keeps the host pyramid, which the generator's rule computes: texram/mipmap.hpp.)
+  // (Ideal computes the exact box pyramid of level 0 itself: texram/trilinear_ideal.hpp.)
   MaterialTexture& mt = textures_[m];
   const host::Material& mat = scene_.materials[m];
   const texram::TexramTexture& tex = *mt.texram;
   const texram::Geometry& g = tex.geometry;
-  texram::TexramTexture generated{tex.kind, g, {}, tex.clut};
+  texram::TexramTexture generated{tex.kind, g, {}, tex.clut, tex.source};
   for (auto& b : generated.banks) b.assign(g.bank_cells(), 0);
   const auto block = std::make_shared<tb::MipgenBlock>();
   for (int p = 0; p < g.planes(); ++p) {

@@ -22,11 +22,13 @@
 #include "render/units.hpp"
 #include "scene/scene.hpp"
 #include "texram/texture.hpp"
+#include "texram/trilinear_ideal.hpp"
 
 namespace tmu::render {
 
 struct MaterialTexture {
   std::shared_ptr<const texram::TexramTexture> texram;  // the trilinear unit's banks
+  std::shared_ptr<const texram::IdealTexture> ideal;    // its source, exactly (ideal renders)
   std::shared_ptr<const ccc::Texture> ccc;              // the low-cost unit's level 0
   glm::ivec2 size{1, 1};                                // level-0 texels
   EffectMaps effects;                                   // what the deflection chain reads

@@ -50,9 +50,10 @@ Run run_engine(const std::string& engine, const texram::TexramTexture& tex,
   Run run;
   const auto t0 = std::chrono::steady_clock::now();
   if (engine == "ideal") {
+    const texram::IdealTexture ideal = texram::ideal_texture(tex.source);
     for (const SampleRequest& r : requests) {
       run.rgba.push_back(
-          round_rgba(texram::ideal_sample(tex, config, r.u, r.v, r.lambda, r.shade)));
+          round_rgba(texram::ideal_sample(ideal, config, r.u, r.v, r.lambda, r.shade)));
     }
   } else if (engine == "golden") {
     texram::PageModel pages;
@@ -169,9 +170,10 @@ void add_sample_command(CLI::App& app, ExitCode& exit_code) {
       const Run other = run_engine(a->check, tex, config, requests);
       if (a->check == "ideal" || a->engine == "ideal") {
         // Against the ideal model: how far apart, per channel, in 8-bit levels.
+        const texram::IdealTexture ideal_tex = texram::ideal_texture(tex.source);
         double max_err = 0, sum = 0;
         for (size_t i = 0; i < requests.size(); ++i) {
-          const auto ideal = texram::ideal_sample(tex, config, requests[i].u, requests[i].v,
+          const auto ideal = texram::ideal_sample(ideal_tex, config, requests[i].u, requests[i].v,
                                                   requests[i].lambda, requests[i].shade);
           const uint32_t got = a->engine == "ideal" ? other.rgba[i] : run.rgba[i];
           for (int ch = 0; ch < 4; ++ch) {

@@ -49,6 +49,7 @@ struct ViewResult {
 ViewResult render_view(const TexramTexture& tex, const SamplerConfig& config, int w, int h) {
   const auto view =
       texram::floor_view(w, h, tex.geometry.texel_width(0), tex.geometry.texel_height(0));
+  const texram::IdealTexture ideal_tex = texram::ideal_texture(tex.source);
   ViewResult r;
   r.golden = ImageRgb8(w, h);
   r.ideal = ImageRgb8(w, h);
@@ -66,7 +67,7 @@ ViewResult render_view(const TexramTexture& tex, const SamplerConfig& config, in
   r.samples = requests.size();
   double se = 0;
   for (size_t i = 0; i < view.size(); ++i) {
-    const auto ideal = texram::ideal_sample(tex, config, view[i].u, view[i].v, view[i].lambda);
+    const auto ideal = texram::ideal_sample(ideal_tex, config, view[i].u, view[i].v, view[i].lambda);
     Rgb8& g = r.golden.at(view[i].x, view[i].y);
     Rgb8& d = r.ideal.at(view[i].x, view[i].y);
     g = {static_cast<uint8_t>(out[i] >> 24), static_cast<uint8_t>(out[i] >> 16),
@@ -93,6 +94,7 @@ std::pair<double, double> random_error(const TexramTexture& tex, const SamplerCo
   std::mt19937 rng(7);
   const int w = static_cast<int>(tex.geometry.texel_width(0)),
             h = static_cast<int>(tex.geometry.texel_height(0));
+  const texram::IdealTexture ideal_tex = texram::ideal_texture(tex.source);
   double max_err = 0, sum = 0;
   for (int i = 0; i < count; ++i) {
     const texram::Request r{static_cast<int32_t>(rng() % (w * 256)),
@@ -100,7 +102,7 @@ std::pair<double, double> random_error(const TexramTexture& tex, const SamplerCo
                             static_cast<int32_t>(rng() % (tex.geometry.levels() * 256)), 0};
     const uint32_t g = texram::sample(tex, config, r);
     const auto ideal =
-        texram::ideal_sample(tex, config, r.u / 256.0, r.v / 256.0, r.lambda / 256.0);
+        texram::ideal_sample(ideal_tex, config, r.u / 256.0, r.v / 256.0, r.lambda / 256.0);
     for (int c = 0; c < 4; ++c) {
       const double e = std::abs(texram::channel(g, c) - ideal[static_cast<size_t>(c)]);
       max_err = std::max(max_err, e);

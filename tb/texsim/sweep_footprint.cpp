@@ -59,6 +59,7 @@ constexpr double kErrorFullScale = 64.0;  // error maps: white at this many 8-bi
 struct Frame {
   host::Scene scene;
   std::vector<render::MaterialTexture> textures;
+  std::vector<texram::IdealTexture> ideal;  // per material: the ideal model's levels
   std::vector<host::Mesh> meshes;
   std::vector<host::Fragment> fragments;
   std::vector<host::FragmentRecord> records;
@@ -66,6 +67,9 @@ struct Frame {
 
   const texram::TexramTexture& texture(size_t i) const {
     return *textures[static_cast<size_t>(fragments[i].material)].texram;
+  }
+  const texram::IdealTexture& ideal_texture(size_t i) const {
+    return ideal[static_cast<size_t>(fragments[i].material)];
   }
   const texram::SamplerConfig& sampler(size_t i) const {
     return scene.materials[static_cast<size_t>(fragments[i].material)].sampler;
@@ -187,7 +191,7 @@ Outcome run_ideal(const Frame& f, footprint::Direction direction) {
   o.seconds = best_time([&] {
     for (size_t i = 0; i < f.records.size(); ++i) {
       const host::Fragment& g = f.fragments[i];
-      o.rgba[i] = round_rgba(footprint::ideal_sample(f.texture(i), f.sampler(i), config, g.uv, g.r1,
+      o.rgba[i] = round_rgba(footprint::ideal_sample(f.ideal_texture(i), f.sampler(i), config, g.uv, g.r1,
                                                      g.r2, f.records[i].shade));
     }
   });
@@ -294,7 +298,7 @@ Reference reference(const Frame& f, int k) {
                                      static_cast<size_t>(s.x / k)];
         if (at < 0 || f.fragments[static_cast<size_t>(at)].material != s.material) continue;
         const auto i = static_cast<size_t>(at);
-        const auto c = footprint::supersampled(f.texture(i), f.sampler(i), s.uv, s.r1, s.r2,
+        const auto c = footprint::supersampled(f.ideal_texture(i), f.sampler(i), s.uv, s.r1, s.r2,
                                                host::quantize(s).shade);
         ref.rgba[i] += glm::dvec4(c[0], c[1], c[2], c[3]);
         ++count[i];
@@ -317,7 +321,7 @@ Reference reference(const Frame& f, int k) {
     }
     const host::Fragment& g = f.fragments[i];
     const auto c =
-        footprint::supersampled(f.texture(i), f.sampler(i), g.uv, g.r1, g.r2, f.records[i].shade);
+        footprint::supersampled(f.ideal_texture(i), f.sampler(i), g.uv, g.r1, g.r2, f.records[i].shade);
     ref.rgba[i] = glm::dvec4(c[0], c[1], c[2], c[3]);
   }
   return ref;
@@ -461,6 +465,8 @@ Frame make_frame(const FootprintSweepArgs& args) {
     const render::Pipeline pipe(f.scene, render::Level::kGolden);  // for its textures
     f.textures = pipe.textures();
   }
+  for (const render::MaterialTexture& t : f.textures)
+    f.ideal.push_back(t.texram ? texram::ideal_texture(t.texram->source) : texram::IdealTexture{});
   std::vector<glm::ivec2> sizes;
   for (const render::MaterialTexture& t : f.textures) sizes.push_back(t.size);
   for (const host::Object& obj : f.scene.objects) f.meshes.push_back(host::make_mesh(obj));

@@ -94,7 +94,7 @@ class Ideal : public Model {
   explicit Ideal(std::shared_ptr<const TrilinearBlock> block) : block_(std::move(block)) {}
   void configure(const Txn& cfg) override {
     setup_ = texram_setup_of(cfg, block_->first().config.widths);
-    texture_ = *block_->textures()->texture_of(setup_);
+    texture_ = texram::ideal_texture(block_->textures()->texture_of(setup_)->source);
     texture_.clut = clut_;
   }
   void step(const Txn& item, Sink& sink) override {
@@ -117,7 +117,7 @@ class Ideal : public Model {
  private:
   std::shared_ptr<const TrilinearBlock> block_;
   TexramSetup setup_;
-  texram::TexramTexture texture_;  // the setup's, with the CLUT as written
+  texram::IdealTexture texture_;  // the setup's source, with the CLUT as written
   texram::Clut32 clut_{};
 };
 
