@@ -1,7 +1,8 @@
 // The ideal (double precision) footprint assembly: the golden model's rules (footprint.hpp)
 // with exact lengths, logarithms, probe positions and samples (texram::ideal_sample), to
 // measure what the setup's widths cost. Its own code throughout: it shares with golden only the
-// q rule's definition (q_rule.hpp) and what the ideal trilinear unit shares. Two references the hardware does not build:
+// q rule's definition (q_rule.hpp) and what the ideal trilinear unit shares. Two references the
+// hardware does not build:
 // - Direction::kEllipseAxis, the exact marching direction of eq. 12-18: the main axis of the
 //   ellipse x^T (M^-1)^T M^-1 x = 1, M = [r1 r2]. Its semi-axes are M's singular values
 //   a >= b, the axis the eigenvector of (M^-1)^T M^-1 det(M)^2 with the smaller eigenvalue

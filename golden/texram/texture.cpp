@@ -77,7 +77,8 @@ TexramTexture texture_from_planes(TexelKind kind, const std::vector<Pyramid8>& p
   const Level8& l0 = planes.front().front();
   const Geometry g(log2_side(l0.width, "width"), log2_side(l0.height, "height"),
                    static_cast<int>(planes.size()));
-  TexramTexture tex{kind, g, empty_banks(g), clut, {kind, l0.width, l0.height, planes, false, false, clut}};
+  TexramTexture tex{
+      kind, g, empty_banks(g), clut, {kind, l0.width, l0.height, planes, false, false, clut}};
   for (size_t p = 0; p < planes.size(); ++p) {
     if (planes[p].size() != static_cast<size_t>(g.levels()) ||
         planes[p].front().width != l0.width || planes[p].front().height != l0.height) {

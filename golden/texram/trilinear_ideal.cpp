@@ -78,8 +78,7 @@ IdealTexture ideal_texture(const SourceTexels& s) {
   const auto fail = [](const std::string& why) {
     throw std::invalid_argument("ideal_texture: " + why);
   };
-  if (s.planes.empty() || s.planes[0].empty() || s.width == 0 || s.height == 0)
-    fail("no texels");
+  if (s.planes.empty() || s.planes[0].empty() || s.width == 0 || s.height == 0) fail("no texels");
   const bool coded = s.kind == TexelKind::kIndex || s.kind == TexelKind::kCcc;
   if (s.box_levels && coded) fail("box levels of indices or CCC blocks have no mean");
   IdealTexture t{s.kind, s.width, s.height, s.block_grid, {}, s.clut};

@@ -114,7 +114,8 @@ Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level
         mt.size = {static_cast<int>(tex.geometry.texel_width(0)),
                    static_cast<int>(tex.geometry.texel_height(0))};
         if (level == Level::kIdeal)
-          mt.ideal = std::make_shared<const texram::IdealTexture>(texram::ideal_texture(tex.source));
+          mt.ideal =
+              std::make_shared<const texram::IdealTexture>(texram::ideal_texture(tex.source));
         mt.texram = std::make_shared<const texram::TexramTexture>(std::move(tex));
       }
     } catch (const InputError& e) {

@@ -67,7 +67,8 @@ ViewResult render_view(const TexramTexture& tex, const SamplerConfig& config, in
   r.samples = requests.size();
   double se = 0;
   for (size_t i = 0; i < view.size(); ++i) {
-    const auto ideal = texram::ideal_sample(ideal_tex, config, view[i].u, view[i].v, view[i].lambda);
+    const auto ideal =
+        texram::ideal_sample(ideal_tex, config, view[i].u, view[i].v, view[i].lambda);
     Rgb8& g = r.golden.at(view[i].x, view[i].y);
     Rgb8& d = r.ideal.at(view[i].x, view[i].y);
     g = {static_cast<uint8_t>(out[i] >> 24), static_cast<uint8_t>(out[i] >> 16),

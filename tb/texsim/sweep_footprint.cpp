@@ -191,8 +191,8 @@ Outcome run_ideal(const Frame& f, footprint::Direction direction) {
   o.seconds = best_time([&] {
     for (size_t i = 0; i < f.records.size(); ++i) {
       const host::Fragment& g = f.fragments[i];
-      o.rgba[i] = round_rgba(footprint::ideal_sample(f.ideal_texture(i), f.sampler(i), config, g.uv, g.r1,
-                                                     g.r2, f.records[i].shade));
+      o.rgba[i] = round_rgba(footprint::ideal_sample(f.ideal_texture(i), f.sampler(i), config, g.uv,
+                                                     g.r1, g.r2, f.records[i].shade));
     }
   });
   uint64_t probes = 0;
@@ -320,8 +320,8 @@ Reference reference(const Frame& f, int k) {
       continue;
     }
     const host::Fragment& g = f.fragments[i];
-    const auto c =
-        footprint::supersampled(f.ideal_texture(i), f.sampler(i), g.uv, g.r1, g.r2, f.records[i].shade);
+    const auto c = footprint::supersampled(f.ideal_texture(i), f.sampler(i), g.uv, g.r1, g.r2,
+                                           f.records[i].shade);
     ref.rgba[i] = glm::dvec4(c[0], c[1], c[2], c[3]);
   }
   return ref;
