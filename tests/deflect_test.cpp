@@ -12,6 +12,7 @@
 
 #include "deflect/bump_map.hpp"
 #include "deflect/coord_tables.hpp"
+#include "deflect/cube_ideal.hpp"
 #include "deflect/cube_map.hpp"
 #include "deflect/deflect_ideal.hpp"
 #include "deflect/normal_encoder.hpp"

@@ -7,12 +7,17 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
+#include <nlohmann/json.hpp>
+#include <random>
 #include <sstream>
 
+#include "blocks/specular_combine/specular_combine_block.hpp"
 #include "common/error.hpp"
 #include "common/image.hpp"
 #include "render/tiles.hpp"
+#include "render/unit_check.hpp"
 #include "tests/cosim_test_support.hpp"
 
 namespace tmu::render {
@@ -97,6 +102,204 @@ TEST(RenderTest, MipmapGeneratorIsBuiltOnlyForABandThatShowsItsMaterial) {
   }
   EXPECT_GT(without, 0);
   EXPECT_GT(with, 0);
+}
+
+// --- Every effect is simulated only where a scene calls for it ------------------------------
+
+// One effect of the documents' pipelines: a bundled scene that has it, how to take it out of a
+// material, and the census keys of the units only it builds (render/units.hpp).
+struct Effect {
+  const char* name;
+  const char* scene;
+  std::function<void(nlohmann::json& material)> remove;
+  std::vector<std::string> units;
+};
+
+void erase(nlohmann::json& m, std::initializer_list<const char*> keys) {
+  for (const char* k : keys) m.erase(k);
+}
+
+// Takes an environment map of `map` ("sphere", "cube") out, with the reflectance that needs it.
+std::function<void(nlohmann::json&)> without_environment(const std::string& map) {
+  return [map](nlohmann::json& m) {
+    if (m.contains("environment") && m["environment"].value("map", "") == map)
+      erase(m, {"environment", "reflectance"});
+  };
+}
+
+const std::vector<std::string> kCubeFaces = {"cube_address",
+                                             "trilinear.environment+X",
+                                             "trilinear.environment-X",
+                                             "trilinear.environment+Y",
+                                             "trilinear.environment-Y",
+                                             "trilinear.environment+Z",
+                                             "trilinear.environment-Z"};
+
+const std::vector<Effect>& effects() {
+  static const std::vector<Effect> e = {
+      {"real-time mipmaps", "everything.json", [](auto& m) { erase(m, {"mipmaps"}); }, {"mipgen"}},
+      {"low-cost unit",
+       "everything.json",
+       [](auto& m) { erase(m, {"unit"}); },
+       {"ccc_cache_bilinear"}},
+      {"footprint assembly",
+       "everything.json",
+       [](auto& m) { erase(m, {"footprint"}); },
+       {"footprint"}},
+      {"bump map",
+       "bumps.json",
+       [](auto& m) { erase(m, {"bump"}); },
+       {"deflect", "trilinear.bump"}},
+      {"shading maps",
+       "bumps.json",  // a bump or a specular term implies them
+       [](auto& m) {
+         erase(m, {"shading", "bump", "specular", "reflectance"});
+       },
+       {"trilinear.diffuse"}},
+      {"specular map",
+       "bumps.json",
+       [](auto& m) {
+         erase(m, {"specular", "reflectance"});
+       },
+       {"trilinear.specular", "specular_combine"}},
+      {"sphere environment map",
+       "reflect.json",
+       without_environment("sphere"),
+       {"trilinear.environment"}},
+      {"cube environment map", "reflect.json", without_environment("cube"), kCubeFaces},
+      {"reflectance map",
+       "reflect.json",
+       [](auto& m) {
+         if (m.contains("reflectance") && m["reflectance"].is_object())
+           m["reflectance"] = {0.5, 0.5, 0.5};
+       },
+       {"trilinear.reflectance"}},
+      {"normal-based shading",
+       "reflect.json",
+       [](auto& m) {
+         erase(m, {"shading", "bump", "specular", "environment", "reflectance"});
+       },
+       {"normal_encoder", "coord_gen", "specular_combine"}},
+      {"procedural materials",
+       "procedural.json",
+       [](auto& m) {
+         if (m.contains("procedural")) {
+           erase(m, {"procedural", "combine"});
+           m["texture"] = {{"pattern", "smooth"}, {"size", {64, 64}}};
+         }
+       },
+       {"material", "specular_combine"}},
+  };
+  return e;
+}
+
+// `scene` with `remove` applied to every material, written beside the test's outputs; the
+// files it names are made absolute so that it loads from there.
+std::string scene_without(const std::string& scene, const Effect& effect, const std::string& out) {
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(kScenes + scene));
+  for (auto& [name, material] : j["materials"].items()) effect.remove(material);
+  const std::function<void(nlohmann::json&)> absolute = [&](nlohmann::json& node) {
+    for (auto& [key, value] : node.items()) {
+      if (value.is_string() && (key == "image" || key == "ccc" || key == "file")) {
+        value = kScenes + value.get<std::string>();
+      } else if (value.is_structured()) {
+        absolute(value);
+      }
+    }
+  };
+  absolute(j);
+  const std::filesystem::path path = tb::testing::temp_dir("tmu_render_test") / (out + ".json");
+  std::ofstream(path) << j.dump(2);
+  return path.string();
+}
+
+// For every effect: the bundled scene that has it constructs each of its units (so the check
+// can fail), and the same scene without it constructs none of them, at golden (the census
+// counts engine constructions at any level).
+TEST(RenderTest, AnEffectNoMaterialNamesBuildsNoUnit) {
+  for (const Effect& e : effects()) {
+    reset_census();
+    render(e.scene, options(Level::kGolden, std::string("with_") + e.name));
+    for (const std::string& unit : e.units)
+      EXPECT_GT(census(unit).built, 0u) << e.name << ": " << e.scene << " builds no " << unit;
+    const std::string edited = scene_without(e.scene, e, std::string("without_") + e.name);
+    reset_census();
+    std::stringstream log;
+    ASSERT_EQ(render_scene(edited, options(Level::kGolden, std::string("without_") + e.name), log),
+              0)
+        << e.name << ": " << log.str();
+    for (const std::string& unit : e.units) {
+      EXPECT_EQ(census(unit).built, 0u) << "without " << e.name << ", " << unit << " was built";
+      EXPECT_EQ(census(unit).cycles, 0u) << "without " << e.name << ", " << unit << " ran";
+    }
+  }
+}
+
+// What a render leaves on the host is named in its report, only for the materials that need it.
+TEST(RenderTest, TheReportNamesTheHostWork) {
+  const auto stages = [](const RenderReport& r) {
+    std::vector<std::string> s;
+    for (const HostWork& w : r.host_work) s.push_back(w.stage.substr(0, w.stage.find(' ')));
+    return s;
+  };
+  EXPECT_TRUE(render("plain.json", options(Level::kRtl, "plain_host")).host_work.empty());
+  const RenderReport reflect = render("reflect.json", options(Level::kGolden, "reflect_host"));
+  using V = std::vector<std::string>;
+  // chrome: sphere map, k_s; gold: cube, k_s; varnish: bump, shading maps, cube, map R.
+  EXPECT_EQ(stages(reflect), (V{"sphere-map", "reflectance", "cube-face", "bump"}))
+      << reflect.text();
+}
+
+// --- render --check, unit by unit -----------------------------------------------------------
+
+UnitRun combine_unit(const std::string& material) {
+  UnitRun u;
+  u.kind = "specular_combine";
+  u.material = material;
+  const auto block = std::make_shared<tb::SpecularCombineBlock>();
+  attach(u, block);
+  std::mt19937_64 rng(3);
+  u.items = block->random_items(rng, 40);
+  run_unit(u, Level::kGolden, {});
+  return u;
+}
+
+// The check compares each unit's outputs field by field and its counters, so a wrong bit in a
+// unit's output or a wrong count is named although a later unit could mask it in the pixels;
+// two renders that built different units differ at the first.
+TEST(RenderTest, UnitCheckNamesTheUnitWhoseOutputOrCounterDiffers) {
+  const std::vector<UnitRun> reference = {combine_unit("a"), combine_unit("b")};
+  EXPECT_TRUE(check_units(reference, reference).match());
+  EXPECT_EQ(check_units(reference, reference).compared, 2u);
+
+  std::vector<UnitRun> got = reference;
+  got[1].result.outputs[7].f[tb::desc::specular_combine::out_colour] ^= 1;
+  UnitCheck c = check_units(got, reference);
+  ASSERT_EQ(c.differences.size(), 1u);
+  EXPECT_NE(c.differences[0].find("specular_combine[b]: 1 of 40 outputs differ, first output 7 "
+                                  "(colour)"),
+            std::string::npos)
+      << c.differences[0];
+  EXPECT_EQ(c.first_unit, 1u);
+  EXPECT_EQ(c.first_cycle, got[1].result.output_cycles[7]);
+
+  got = reference;
+  std::vector<UnitRun> counted = reference;
+  counted[0].result.counters.push_back({"hits", 3});
+  got[0].result.counters.push_back({"hits", 4});
+  c = check_units(got, counted);
+  ASSERT_EQ(c.differences.size(), 1u);
+  EXPECT_NE(c.differences[0].find("specular_combine[a]: counter hits"), std::string::npos)
+      << c.differences[0];
+
+  got = reference;
+  got[0].material = "c";
+  c = check_units(got, reference);
+  ASSERT_EQ(c.differences.size(), 1u);
+  EXPECT_NE(c.differences[0].find("this render built specular_combine[c], the reference "
+                                  "specular_combine[a]"),
+            std::string::npos)
+      << c.differences[0];
 }
 
 // The units of each material of scenes/reflect.json, in the order the chain runs them

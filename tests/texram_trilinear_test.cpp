@@ -150,6 +150,38 @@ TEST(TexramTrilinearTest, OneTexelTextureIsEverywhereItsTexel) {
 
 // --- configurations ------------------------------------------------------------------------
 
+// The definitions golden and the ideal share (texel configurations, the RGBA8888 packing, the
+// CCC block word) read alike: at every texel of every level the banks (golden, through the
+// layout) and the source (the ideal's own decoding) give the same colour; exactly where the
+// levels are given, within the pyramid's 0.5 where they are the box rule's.
+TEST(TexramTrilinearTest, GoldenAndIdealReadTheSameTexelsAtEveryLevel) {
+  const ImageRgb8 img = patterns::noise(32, 8, 5);
+  for (TexelKind kind : {TexelKind::kLuminance, TexelKind::kIndex, TexelKind::kTrueColour,
+                         TexelKind::kSingle, TexelKind::kCcc}) {
+    for (int channel_index : {0, 3}) {
+      const TexramTexture t = import_image(img, kind, channel_index);
+      const IdealTexture ideal = ideal_texture(t.source);
+      ASSERT_EQ(ideal.levels(), t.geometry.levels());
+      SamplerConfig c = config(Filter::kNearest, Border::kWrap, kind);
+      c.single_channel = channel_index;
+      const bool given = kind == TexelKind::kIndex || kind == TexelKind::kCcc;
+      for (int l = 0; l < t.geometry.levels(); ++l) {
+        for (uint32_t y = 0; y < t.geometry.texel_height(l); ++y) {
+          for (uint32_t x = 0; x < t.geometry.texel_width(l); ++x) {
+            const uint32_t g = texel_rgba(t, c, l, x, y);
+            const auto e = ideal_texel(ideal, c, l, x, y);
+            for (int ch = 0; ch < 4; ++ch) {
+              ASSERT_LE(std::abs(channel(g, ch) - e[static_cast<size_t>(ch)]),
+                        given || l == 0 ? 0.0 : 0.5)
+                  << name(kind) << " level " << l << " (" << x << ", " << y << ") channel " << ch;
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(TexramTrilinearTest, EachConfigurationReturnsItsTexelsAtTexelCentres) {
   const ImageRgb8 img = patterns::smooth_field(32, 16, 9);
   for (TexelKind kind : {TexelKind::kLuminance, TexelKind::kIndex, TexelKind::kTrueColour,

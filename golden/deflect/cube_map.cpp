@@ -9,10 +9,9 @@
 namespace tmu::deflect {
 namespace {
 
-// The face and its (sc, tc) for a vector, on any number type.
-template <class T>
-uint32_t major_face(T x, T y, T z, T& sc, T& tc, T& ma) {
-  const T ax = x < 0 ? -x : x, ay = y < 0 ? -y : y, az = z < 0 ? -z : z;
+// The face and its (sc, tc) for a vector.
+uint32_t major_face(int32_t x, int32_t y, int32_t z, int32_t& sc, int32_t& tc, int32_t& ma) {
+  const int32_t ax = x < 0 ? -x : x, ay = y < 0 ? -y : y, az = z < 0 ? -z : z;
   if (ax >= ay && ax >= az) {
     ma = ax;
     sc = x < 0 ? z : -z;
@@ -45,16 +44,6 @@ CubeAddress cube_address(int32_t x, int32_t y, int32_t z, int face_log2, int see
   };
   out.u = coord(sc);
   out.v = coord(tc);
-  return out;
-}
-
-CubeIdeal cube_address_ideal(double x, double y, double z, int face_log2) {
-  double sc = 0, tc = 0, ma = 0;
-  CubeIdeal out;
-  out.face = major_face(x, y, z, sc, tc, ma);
-  const double size = std::ldexp(1.0, face_log2);
-  out.u = ma == 0 ? size / 2 : (sc / ma + 1) / 2 * size;
-  out.v = ma == 0 ? size / 2 : (tc / ma + 1) / 2 * size;
   return out;
 }
 

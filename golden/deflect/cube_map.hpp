@@ -29,11 +29,6 @@ struct CubeAddress {
 
 CubeAddress cube_address(int32_t x, int32_t y, int32_t z, int face_log2, int seed_bits = 7);
 
-// The ideal: the same face rule on doubles, exact division.
-struct CubeIdeal {
-  uint32_t face = 0;
-  double u = 0, v = 0;  // texels
-};
-CubeIdeal cube_address_ideal(double x, double y, double z, int face_log2);
+// Its ideal, by its own code: deflect/cube_ideal.hpp.
 
 }  // namespace tmu::deflect

@@ -14,6 +14,7 @@
 #include "blocks/trilinear/trilinear_block.hpp"
 #include "deflect/bump_map.hpp"
 #include "deflect/coord_tables.hpp"
+#include "deflect/cube_ideal.hpp"
 #include "deflect/cube_map.hpp"
 #include "deflect/deflect_ideal.hpp"
 #include "deflect/view_maps.hpp"
@@ -60,7 +61,8 @@ struct Runner {
                                std::vector<size_t> fragments_of_outputs) {
     UnitRun unit;
     unit.kind = "trilinear";
-    unit.material = in.material.name + "." + what;
+    unit.material = in.material.name;
+    unit.role = what;
     const auto block = std::make_shared<tb::TrilinearBlock>(
         tb::BlockOptions{}, tb::TrilinearEnv{map.texture, map.sampler, what});
     attach(unit, block);
@@ -215,6 +217,29 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
   for (const tb::Txn& t : runner.run(std::move(combine), frags))
     out.push_back(static_cast<uint32_t>(t.f[tb::desc::specular_combine::out_colour]));
   return out;
+}
+
+std::vector<HostWork> effect_chain_host_work(const host::Material& mat, const EffectMaps& maps) {
+  std::vector<HostWork> w;
+  if (maps.bump) {
+    w.push_back({"bump texel unpacking (deflect::unpack_bump: bit fields to the grid angles)",
+                 "tmu_deflect takes the bump angles, not the map's texel"});
+  }
+  if (maps.diffuse || maps.specular || maps.sphere) {
+    w.push_back({"sphere-map texel coordinates (deflect::sphere_map_u/v: an adder and a shift)",
+                 "they sit between tmu_coord_gen and the map's trilinear unit, in neither top"});
+  }
+  if (maps.cube[0]) {
+    w.push_back({"cube-face dispatch: each sample to its face's trilinear unit",
+                 "tmu_cube_address selects the face; the six faces are six maps in six units "
+                 "until one TEXRAM memory holds them"});
+  }
+  if ((mat.specular || mat.environment) && !maps.reflectance) {
+    w.push_back({"reflectance register k_s (the scene's constant as RGBA8888)",
+                 "a register value the host computes and writes; tmu_specular_combine reads it "
+                 "with every pixel"});
+  }
+  return w;
 }
 
 std::vector<dvec4> ideal_effect_chain(const ChainInput& in,

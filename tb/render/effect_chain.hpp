@@ -38,6 +38,11 @@ struct ChainInput {
 std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun>& units,
                                        std::vector<std::vector<size_t>>& outputs_of);
 
+// What run_effect_chain computes on the host for `material` (its stages that are not yet a
+// unit's), with the reason.
+std::vector<HostWork> effect_chain_host_work(const host::Material& material,
+                                             const EffectMaps& maps);
+
 // The ideal: the exact normal rotated by the bump texel's exact angles, exact map coordinates
 // and reflection vector, the maps sampled there by the ideal trilinear unit, eq. 5-7 in
 // double precision (clamped at 255, as the hardware saturates). `fragments` as records.

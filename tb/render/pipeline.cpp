@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <bit>
 #include <stdexcept>
 
@@ -233,6 +234,7 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
     }
 
     if (mat.uses_normal()) {
+      for (const HostWork& w : effect_chain_host_work(mat, tex.effects)) note_host_work(w);
       const std::vector<uint32_t> rgba =
           run_effect_chain({scene_, mat, tex, level_, records, frags}, units_, fragment_of_output_);
       for (size_t k = 0; k < frags.size(); ++k) out[frags[k]] = rgba[k];
@@ -267,12 +269,22 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
       }
       out[frags[k]] = c;
     }
+    if (lowcost && mat.sampler.combine != texram::Combine::kOne) {
+      note_host_work({"low-cost unit's eq. 5 combine (texram::combine)",
+                      "the low-cost unit of 000 §4 has no eq. 5 stage (eq. 5 is the TEXRAM's, §7); "
+                      "the project applies the scene's combine to its RGB888"});
+    }
     done += frags.size();
     if (progress) progress(done, records.size());
     units_.push_back(std::move(run));
     fragment_of_output_.push_back(frags);
   }
   return out;
+}
+
+void Pipeline::note_host_work(const HostWork& w) {
+  if (std::find(host_work_.begin(), host_work_.end(), w) == host_work_.end())
+    host_work_.push_back(w);
 }
 
 }  // namespace tmu::render

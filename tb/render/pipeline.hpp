@@ -78,6 +78,8 @@ class Pipeline {
   // material's mipgen units before its chain).
   std::vector<UnitRun>& units() { return units_; }
   const std::vector<UnitRun>& units() const { return units_; }
+  // The stages shade() computed on the host for the materials it shaded (not ideal), each once.
+  const std::vector<HostWork>& host_work() const { return host_work_; }
   // For each unit (same order), the fragment index of each of its outputs (mipgen: none).
   const std::vector<std::vector<size_t>>& fragments_of_outputs() const {
     return fragment_of_output_;
@@ -92,6 +94,8 @@ class Pipeline {
   std::vector<MaterialTexture> textures_;
   std::vector<UnitRun> units_;
   std::vector<std::vector<size_t>> fragment_of_output_;
+  std::vector<HostWork> host_work_;
+  void note_host_work(const HostWork& w);
 };
 
 }  // namespace tmu::render

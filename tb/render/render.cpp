@@ -17,6 +17,7 @@
 #include "raster/rasterizer.hpp"
 #include "render/pipeline.hpp"
 #include "render/progress.hpp"
+#include "render/unit_check.hpp"
 #include "scene/scene.hpp"
 #include "texram/sampler_config.hpp"
 #include "trace/fragment_trace.hpp"
@@ -159,6 +160,7 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
   if (o.inject_fault >= 0 && static_cast<size_t>(o.inject_fault) < rgba.size()) {
     rgba[static_cast<size_t>(o.inject_fault)] ^= 0x100u;  // a deliberate wrong bit (blue LSB)
   }
+  if (o.level != Level::kIdeal) rep.host_work = pipe.host_work();
   for (const UnitRun& u : pipe.units()) {
     UnitReport ur{u.name(),         u.kind, static_cast<uint64_t>(u.result.outputs.size()),
                   u.result.cycles,  false,  u.result.seconds,
@@ -216,41 +218,35 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
       }
       heat.at(records[i].x, records[i].y - band.row_begin) = hot(0.34 + worst / 48.0);
     }
+    const UnitCheck units = check_units(pipe.units(), ref.units());
+    c.units_compared = units.compared;
+    c.unit_differences = units.differences;
     if (c.differing) {
       const std::string diff = (dir / (stem + ".check-diff.png")).string();
       write_image(diff, heat);
       rep.files.push_back(diff);
-      if (o.waveform && o.level == Level::kRtl) {
-        // The unit behind the first mismatch: in a chain of units (render/effect_chain.hpp)
-        // the first unit whose output differs from the reference's same unit; a unit's
-        // outputs are compared only when both pipelines built the same units.
-        std::optional<std::pair<size_t, size_t>> culprit;  // unit, output
-        const bool same_units = ref.units().size() == pipe.units().size();
-        for (size_t u = 0; same_units && u < pipe.units().size() && !culprit; ++u) {
-          const auto& got = pipe.units()[u].result.outputs;
-          const auto& want = ref.units()[u].result.outputs;
-          for (size_t k = 0; k < std::min(got.size(), want.size()); ++k) {
-            if (got[k] != want[k]) {
-              culprit = {u, k};
-              break;
-            }
-          }
-        }
-        for (size_t u = 0; u < pipe.units().size() && !culprit; ++u) {  // else the fragment's
-          const auto& outs = pipe.fragments_of_outputs()[u];
-          const auto it = std::find(outs.begin(), outs.end(), first);
-          if (it != outs.end()) culprit = {u, static_cast<size_t>(it - outs.begin())};
-        }
-        if (culprit) {
-          UnitRun& unit = pipe.units()[culprit->first];
-          const tb::WaveWindow w =
-              tb::dump_waveform(*unit.engine("rtl"), unit.items, tb::RunOptions{},
-                                unit.result.output_cycles[culprit->second], 64, 16, o.out_dir,
-                                stem + ".mismatch", unit.ports);
-          c.waveform = fmt::format("{} (unit {}, output {}, cycles {}..{}; gtkwave {})", w.fst,
-                                   unit.name(), culprit->second, w.begin, w.end, w.gtkw);
-          rep.files.push_back(w.fst);
-        }
+    }
+    if (!c.match() && o.waveform && o.level == Level::kRtl) {
+      // The unit behind the first mismatch: the first unit whose outputs, requests or counters
+      // differ from the reference's same unit; else (a difference after the units) the unit
+      // that made the first differing fragment's last output.
+      std::optional<std::pair<size_t, uint64_t>> culprit;  // unit, cycle
+      if (units.first_unit) culprit = {*units.first_unit, units.first_cycle};
+      for (size_t u = pipe.units().size(); u-- > 0 && !culprit && c.differing;) {
+        const auto& outs = pipe.fragments_of_outputs()[u];
+        const auto it = std::find(outs.begin(), outs.end(), first);
+        if (it != outs.end())
+          culprit = {u,
+                     pipe.units()[u].result.output_cycles[static_cast<size_t>(it - outs.begin())]};
+      }
+      if (culprit) {
+        UnitRun& unit = pipe.units()[culprit->first];
+        const tb::WaveWindow w =
+            tb::dump_waveform(*unit.engine("rtl"), unit.items, tb::RunOptions{}, culprit->second,
+                              64, 16, o.out_dir, stem + ".mismatch", unit.ports);
+        c.waveform = fmt::format("{} (unit {}, cycles {}..{}; gtkwave {})", w.fst, unit.name(),
+                                 w.begin, w.end, w.gtkw);
+        rep.files.push_back(w.fst);
       }
     }
     rep.check = c;
@@ -294,7 +290,7 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
   write_file_atomically(text_path, text);
   log << text;
   if (report_out) *report_out = rep;
-  return rep.check && rep.check->differing ? 1 : 0;
+  return rep.check && !rep.check->match() ? 1 : 0;
 }
 
 }  // namespace tmu::render

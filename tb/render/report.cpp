@@ -63,6 +63,10 @@ std::string RenderReport::text() const {
       break;
     }
   }
+  if (!host_work.empty()) {
+    s += "  host work (stages of the documents' pipelines computed on the host, not in a unit):\n";
+    for (const HostWork& w : host_work) s += fmt::format("    {}: {}\n", w.stage, w.reason);
+  }
   s += fmt::format("  cycles per pixel: {:.2f} ({} unit cycles, {} pixels)\n",
                    per(unit_cycles(), pixels), unit_cycles(), pixels);
   const uint64_t accesses = memory_counter(units, "accesses");
@@ -99,12 +103,18 @@ std::string RenderReport::text() const {
       "  wall time: front end {:.3f} s, textures {:.3f} s, units {:.3f} s, total {:.3f} s\n",
       front_end_s, textures_s, units_s, total_s);
   if (check) {
-    if (check->differing == 0) {
-      s += fmt::format("  check: MATCH: {} = {}, all {} fragments bit-exact\n", engine,
-                       check->against, check->compared);
+    if (check->match()) {
+      s += fmt::format(
+          "  check: MATCH: {} = {}, all {} fragments bit-exact, and all {} units' outputs, memory "
+          "requests and counters\n",
+          engine, check->against, check->compared, check->units_compared);
     } else {
-      s += fmt::format("  check: MISMATCH: {} of {} fragments differ between {} and {}\n",
-                       check->differing, check->compared, engine, check->against);
+      s += fmt::format(
+          "  check: MISMATCH: {} of {} fragments differ between {} and {}; {} of {} units "
+          "differ\n",
+          check->differing, check->compared, engine, check->against, check->unit_differences.size(),
+          check->units_compared);
+      for (const std::string& d : check->unit_differences) s += "    unit " + d + "\n";
       for (const Mismatch& m : check->first) {
         s += fmt::format("    pixel ({}, {}): expected 0x{:08X}, got 0x{:08X}; fragment {}\n", m.x,
                          m.y, m.expected, m.got, m.fragment);
@@ -144,6 +154,9 @@ std::string RenderReport::json() const {
                           {"counters", c}});
   }
   if (units.empty()) j["units"] = nlohmann::json::array();
+  j["host_work"] = nlohmann::json::array();
+  for (const HostWork& w : host_work)
+    j["host_work"].push_back({{"stage", w.stage}, {"reason", w.reason}});
   j["cycles"] = unit_cycles();
   j["cycles_per_pixel"] = per(unit_cycles(), pixels);
   j["memory"] = {{"accesses", memory_counter(units, "accesses")},
@@ -167,7 +180,9 @@ std::string RenderReport::json() const {
     j["check"] = {{"against", check->against},
                   {"compared", check->compared},
                   {"differing", check->differing},
-                  {"match", check->differing == 0}};
+                  {"units_compared", check->units_compared},
+                  {"unit_differences", check->unit_differences},
+                  {"match", check->match()}};
     for (const Mismatch& m : check->first) {
       j["check"]["first"].push_back({{"x", m.x},
                                      {"y", m.y},

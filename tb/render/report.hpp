@@ -10,6 +10,7 @@
 #include "harness/engine.hpp"
 #include "raster/rasterizer.hpp"
 #include "render/tiles.hpp"
+#include "render/units.hpp"
 
 namespace tmu::render {
 
@@ -28,10 +29,14 @@ struct Mismatch {
 };
 
 struct CheckReport {
-  std::string against;  // the engine compared with
-  uint64_t compared = 0, differing = 0;
+  std::string against;                   // the engine compared with
+  uint64_t compared = 0, differing = 0;  // fragments
   std::vector<Mismatch> first;
+  // Unit by unit (render/unit_check.hpp): outputs, memory requests and counters.
+  uint64_t units_compared = 0;
+  std::vector<std::string> unit_differences;
   std::string waveform;  // FST around the first mismatch, when written
+  bool match() const { return differing == 0 && unit_differences.empty(); }
 };
 
 struct CompareReport {
@@ -44,6 +49,7 @@ struct RenderReport {
   host::RasterStats raster;
   uint64_t pixels = 0;  // of the band
   std::vector<UnitReport> units;
+  std::vector<HostWork> host_work;  // the documents' stages the host computed, and why
   double front_end_s = 0, textures_s = 0, units_s = 0, total_s = 0;
   std::optional<CheckReport> check;
   std::optional<CompareReport> compare;

@@ -37,7 +37,7 @@ std::map<std::string, UnitCensus>& census_map() {
 }
 }  // namespace
 
-UnitCensus& census(const std::string& kind) { return census_map()[kind]; }
+UnitCensus& census(const std::string& key) { return census_map()[key]; }
 void reset_census() { census_map().clear(); }
 
 void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options) {
@@ -47,6 +47,7 @@ void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options) {
                              ") failed: " + unit.result.error);
   }
   census(unit.kind).cycles += unit.result.cycles;
+  if (!unit.role.empty()) census(unit.role_key()).cycles += unit.result.cycles;
 }
 
 std::vector<tb::Txn> run_and_keep(UnitRun unit, Level level,

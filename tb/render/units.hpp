@@ -25,34 +25,50 @@ std::string engine_name(Level level);
 
 // One unit built for one material: what it did.
 struct UnitRun {
-  std::string kind;      // trilinear, lowcost, mipgen
+  std::string kind;      // the block: trilinear, footprint, mipgen, deflect, ...
   std::string material;  // the material whose chain built it
+  std::string role;      // what a map unit reads for it ("bump", "environment+X"), or empty
   // The unit's engine at a level ("golden", "hls", "rtl"), and its ports (for a waveform).
   std::function<std::unique_ptr<tb::Engine>(const std::string& level)> engine;
+  std::shared_ptr<const tb::Block> block;  // its schemas, for the unit-by-unit check
   std::vector<tb::Port> ports;
   std::vector<tb::Txn> items;  // its stimulus
   tb::RunResult result;        // its outputs, cycles and counters
 
-  std::string name() const { return kind + "[" + material + "]"; }
+  std::string name() const {
+    return kind + "[" + material + (role.empty() ? "" : "." + role) + "]";
+  }
+  // The census key of a unit with a role: "trilinear.bump".
+  std::string role_key() const { return role.empty() ? "" : kind + "." + role; }
+};
+
+// A stage of the documents' pipelines that a render at golden, hls or rtl computes on the host
+// rather than in a unit, and why. The render report lists them.
+struct HostWork {
+  std::string stage, reason;
+  friend bool operator==(const HostWork&, const HostWork&) = default;
 };
 
 // How many units of each kind this process has built (engines constructed, at any level, by
 // the factory attach() gives them) and how many cycles they ran: the proof that a scene builds
-// and clocks only the units it calls for.
+// and clocks only the units it calls for. A unit with a role counts under its kind and under
+// kind.role too ("trilinear" and "trilinear.diffuse"), so each map of a chain can be told apart.
 struct UnitCensus {
   uint64_t built = 0;
   uint64_t cycles = 0;
 };
-UnitCensus& census(const std::string& kind);
+UnitCensus& census(const std::string& key);
 void reset_census();
 
 // A unit's engines and ports from a block that owns its environment.
-// Set run.kind first: each engine the factory constructs counts in that kind's census.
+// Set run.kind (and run.role) first: each engine the factory constructs counts in their census.
 template <class Block>
 void attach(UnitRun& run, std::shared_ptr<Block> block) {
   run.ports = block->ports();
-  run.engine = [block, kind = run.kind](const std::string& level) {
+  run.block = block;
+  run.engine = [block, kind = run.kind, role = run.role_key()](const std::string& level) {
     ++census(kind).built;
+    if (!role.empty()) ++census(role).built;
     return block->engine(level);
   };
 }

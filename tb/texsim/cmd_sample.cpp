@@ -94,6 +94,19 @@ Run run_engine(const std::string& engine, const texram::TexramTexture& tex,
   return run;
 }
 
+// "page_faults 12 against 13, ..." for each counter that differs; empty when all agree.
+std::string memory_difference(const texram::PageStats& a, const texram::PageStats& b) {
+  std::string d;
+  const auto add = [&](const char* name, uint64_t x, uint64_t y) {
+    if (x != y) d += fmt::format("{}{} {} against {}", d.empty() ? "" : ", ", name, x, y);
+  };
+  add("accesses", a.accesses, b.accesses);
+  add("bank_reads", a.bank_reads, b.bank_reads);
+  add("page_faults", a.page_faults, b.page_faults);
+  add("slow_accesses", a.slow_accesses, b.slow_accesses);
+  return d;
+}
+
 void report(const Run& run, size_t n) {
   if (run.cycles) {
     const double per_clock = static_cast<double>(n) / static_cast<double>(run.cycles);
@@ -191,9 +204,18 @@ void add_sample_command(CLI::App& app, ExitCode& exit_code) {
                    a->engine, a->check);
         exit_code.value = 1;
         return;
+      } else if (const std::string d = run.memory && other.memory
+                                           ? memory_difference(*run.memory, *other.memory)
+                                           : "";
+                 !d.empty()) {
+        // golden's page model predicts the counters the hls and rtl memories count.
+        fmt::print("MISMATCH: the memory counters differ between {} and {}: {}\n", a->engine,
+                   a->check, d);
+        exit_code.value = 1;
+        return;
       } else {
-        fmt::print("MATCH: {} = {}, all {} results bit-exact\n", a->engine, a->check,
-                   run.rgba.size());
+        fmt::print("MATCH: {} = {}, all {} results bit-exact, and the memory counters\n", a->engine,
+                   a->check, run.rgba.size());
       }
     }
     write_results(a->out, run.rgba);

@@ -10,6 +10,7 @@
 #include "blocks/registry.hpp"
 #include "blocks/trilinear/trilinear_block.hpp"
 #include "harness/cosim.hpp"
+#include "harness/scoreboard.hpp"
 #include "render/render.hpp"
 
 namespace tmu::texsim {
@@ -31,19 +32,23 @@ tb::BlockOptions options_of(const std::string& block, uint64_t seed) {
   return o;
 }
 
-std::string compare(const tb::Schema& schema, const tb::RunResult& golden,
-                    const tb::RunResult& run) {
-  if (run.outputs.size() != golden.outputs.size()) {
-    return fmt::format("NO: {} outputs, golden {}", run.outputs.size(), golden.outputs.size());
+// The scoreboard's verdict (harness/scoreboard.hpp): every output, memory request and counter.
+std::string compare(const tb::Block& block, const tb::RunResult& golden, const tb::RunResult& run) {
+  const tb::Comparison c = tb::compare(block.outputs(), golden, run, block.request_schemas());
+  if (c.match()) return "yes";
+  if (c.first) {
+    const tb::Mismatch& m = *c.first;
+    if (!m.got || m.fields.empty())
+      return fmt::format("NO: output {} missing or extra", m.output_index);
+    return fmt::format("NO: output {} field {}", m.output_index,
+                       block.outputs().field(static_cast<size_t>(m.fields.front())).name);
   }
-  for (size_t i = 0; i < run.outputs.size(); ++i) {
-    for (size_t f = 0; f < schema.size(); ++f) {
-      if (run.outputs[i].f[f] != golden.outputs[i].f[f]) {
-        return fmt::format("NO: output {} field {}", i, schema.fields()[f].name);
-      }
-    }
+  if (!c.requests.empty()) {
+    return fmt::format("NO: memory request {} of channel {}", c.requests.front().first.output_index,
+                       c.requests.front().channel);
   }
-  return "yes";
+  if (!c.counter_diffs.empty()) return "NO: counter " + c.counter_diffs.front();
+  return "NO: " + c.error;
 }
 
 // The least total time a level is measured for (see measure_levels).
@@ -104,7 +109,7 @@ BlockLevels measure_levels(const std::string& block_name, size_t count, uint64_t
     } else if (level == "golden") {
       golden = run;
     } else if (level != "ideal") {
-      row.verdict = compare(block->outputs(), golden, run);
+      row.verdict = compare(*block, golden, run);
     }
     if (!fst.empty() && std::filesystem::exists(fst)) {
       row.note = fmt::format("FST of every signal, {:.1f} MB",
