@@ -2,12 +2,15 @@
 // table, its hard cases (zero, tiny, poles, octant boundaries, equal components), the
 // spherical-to-spherical map's symmetry and the MBR's hit / miss / bypass sequence, the
 // coordinate tables; and every unit's error against the ideal model, with the bounds
-// reasoned out next to them.
+// reasoned out next to them. The definitions the two models share (sphere_grid_definition.hpp,
+// view_frame_definition.hpp) on their own, and the ideal's own decoding of the grid angles
+// equal to golden's.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <iostream>
+#include <numbers>
 #include <random>
 
 #include "deflect/bump_map.hpp"
@@ -36,6 +39,52 @@ double encode_error(const NormalEncoder& enc, glm::dvec3 n) {
 glm::dvec3 random_unit(std::mt19937_64& rng) {
   std::normal_distribution<double> nd;
   return glm::normalize(glm::dvec3(nd(rng), nd(rng), nd(rng)));
+}
+
+// --- the grid's definition -------------------------------------------------------------
+
+// The grid's sizes and step on their own, for every grid the units allow: 4Q phi nodes, Q
+// theta magnitudes, a sign bit above them, 2 pi / 4Q per step; the default is the paper's
+// 512 x 256. The default view frame is orthonormal with v_dir = v_side x v_up.
+TEST(DeflectGridTest, DefinitionSizesStepAndDefaultView) {
+  for (int a = 6; a <= 12; ++a) {
+    const SphereGrid g{a};
+    EXPECT_EQ(g.phi_count(), 4 * g.quarter());
+    EXPECT_EQ(g.quarter(), 1u << g.mag_bits());
+    EXPECT_EQ(g.theta_bits(), g.mag_bits() + 1);
+    EXPECT_EQ(g.phi_mask() + 1, g.phi_count());
+    EXPECT_DOUBLE_EQ(g.step() * g.phi_count(), 2 * std::numbers::pi);
+  }
+  EXPECT_EQ(kGrid.phi_count(), 512u);
+  const ViewFrame f;
+  const glm::dvec3 side(f.side[0], f.side[1], f.side[2]), up(f.up[0], f.up[1], f.up[2]),
+      dir(f.dir[0], f.dir[1], f.dir[2]);
+  EXPECT_EQ(glm::dot(side, up), 0.0);
+  EXPECT_EQ(glm::length(side), 1.0);
+  EXPECT_EQ(glm::length(up), 1.0);
+  EXPECT_EQ(glm::cross(side, up), dir);
+}
+
+// Two implementations of the angles' encoding: the ideal's decoding (its own arithmetic) is
+// golden's (phi_mask, theta_steps) on every raw value of every grid, bits above the fields
+// included, and it inverts golden's make_theta.
+TEST(DeflectGridTest, IdealDecodingIsGoldensOnEveryValue) {
+  for (int a = 6; a <= 12; ++a) {
+    const SphereGrid g{a};
+    for (uint32_t x = 0; x < 2 * g.phi_count(); ++x) {
+      const ideal::Angles p = ideal::grid_angles(g, SphereAngle{x, 0});
+      ASSERT_EQ(p.phi, (x & g.phi_mask()) * g.step()) << a << " phi " << x;
+      const ideal::Angles t = ideal::grid_angles(g, SphereAngle{0, x});
+      ASSERT_EQ(t.theta, theta_steps(g, x) * g.step()) << a << " theta " << x;
+      ASSERT_FALSE(std::signbit(t.theta) && t.theta == 0) << a << " theta " << x << ": -0.0";
+    }
+    for (uint32_t m = 0; m < g.quarter(); ++m) {
+      for (const bool negative : {false, true}) {
+        const double theta = ideal::grid_angles(g, {0, make_theta(g, negative, m)}).theta;
+        EXPECT_EQ(theta, (negative ? -1.0 : 1.0) * m * g.step());
+      }
+    }
+  }
 }
 
 // --- the divider ------------------------------------------------------------------------

@@ -2,13 +2,17 @@
 // v = 0 and beyond it, the mod-128 colour index at the wrap (also for negative coordinates),
 // brick geometry (joints, the half-brick shift, strict bounds), the gases' rules, coordinates
 // beyond SolidCoord, the registers' ranges, and the colour index within a stated bound of the
-// ideal model's.
+// ideal model's. The definitions the two models share (material_definition.hpp) on their own,
+// and the ideal's own brick test against golden's: equal on SolidCoord's grid, and between
+// grid points different only in the raw unit at a joint's lower edge.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <vector>
 
 #include "perlin/material_unit.hpp"
 #include "perlin/materials.hpp"
@@ -105,6 +109,86 @@ TEST(PerlinMaterialsTest, BrickJointsAndTheHalfBrickShift) {
   EXPECT_EQ(shade_material(c, r, t, 2048, mid_row0, 0), t.mortar[i]);
   const uint32_t j = index_value(c, r, 0, mid_row0, 0) >> 8;
   EXPECT_EQ(shade_material(c, r, t, 0, mid_row0, 0), t.main[j]);
+}
+
+// The registers' defaults are in range, and the index's entry bits (14:8) address every
+// colour table entry and no more.
+TEST(PerlinMaterialsTest, DefinitionsDefaultsAndTableSize) {
+  EXPECT_NO_THROW(check(MaterialRegs{}));
+  EXPECT_EQ(kColourEntries, 1 << (kIndexBits - 8));
+  const ColourTables t;
+  EXPECT_EQ(t.main.size(), size_t{kColourEntries});
+  EXPECT_EQ(t.mortar.size(), size_t{kColourEntries});
+}
+
+// Brick registers to try: the default, small periods (joints dominate), no mortar, the widest
+// mortar check() allows, and a tall period.
+std::vector<MaterialRegs> brick_registers() {
+  std::vector<MaterialRegs> out;
+  constexpr std::array<std::array<int, 4>, 5> kCases = {
+      {{12, 11, 205, 205}, {3, 2, 1, 0}, {5, 4, 0, 0}, {4, 6, 7, 31}, {16, 9, 300, 17}}};
+  for (const auto& [pw, ph, mw, mh] : kCases) {
+    MaterialRegs r;
+    r.kind = MaterialKind::kBrick;
+    r.pw = pw;
+    r.ph = ph;
+    r.mortar_w = mw;
+    r.mortar_h = mh;
+    check(r);
+    out.push_back(r);
+  }
+  return out;
+}
+
+// Two implementations of the brick geometry: the ideal's (exact coordinates) is golden's at
+// every point of SolidCoord's grid, through every cell of small periods (rows -3..3, including
+// every joint edge) and at random points far out.
+TEST(PerlinMaterialsTest, IdealBrickTestIsGoldensOnTheGrid) {
+  std::mt19937_64 rng(8);
+  std::uniform_int_distribution<int64_t> any(-(int64_t{1} << 23), (int64_t{1} << 23) - 1);
+  for (const MaterialRegs& r : brick_registers()) {
+    const int64_t pw = int64_t{1} << r.pw, ph = int64_t{1} << r.ph;
+    const auto same = [&](int64_t u, int64_t v) {
+      return ideal::in_brick(r, double(u) / kOne, double(v) / kOne) == in_brick(r, u, v);
+    };
+    if (r.pw <= 6 && r.ph <= 6) {
+      for (int64_t v = -3 * ph; v < 3 * ph; ++v) {
+        for (int64_t u = -2 * pw; u < 2 * pw; ++u) ASSERT_TRUE(same(u, v)) << u << " " << v;
+      }
+    }
+    for (int n = 0; n < 100000; ++n) {
+      const int64_t u = any(rng), v = any(rng);
+      ASSERT_TRUE(same(u, v)) << u << " " << v;
+    }
+  }
+}
+
+// Between grid points golden sees the coordinate floored to the grid: a point in the raw unit
+// just past a joint's lower edge (M_W < u_r < M_W + 1 raw units) is brick to the ideal and
+// mortar to golden. That is the only difference (the upper edges agree: u_r < W + M_W and its
+// floor are the same test).
+TEST(PerlinMaterialsTest, IdealBrickTestOffTheGridDiffersOnlyPastALowerEdge) {
+  std::mt19937_64 rng(10);
+  std::uniform_real_distribution<double> any(-64, 64);
+  for (const MaterialRegs& r : brick_registers()) {
+    const int64_t pw = int64_t{1} << r.pw, ph = int64_t{1} << r.ph;
+    int differ = 0;
+    constexpr int kSamples = 200000;
+    for (int n = 0; n < kSamples; ++n) {
+      const double u = any(rng), v = any(rng);
+      const auto ru = static_cast<int64_t>(std::floor(u * kOne)),
+                 rv = static_cast<int64_t>(std::floor(v * kOne));
+      const bool golden = in_brick(r, ru, rv);
+      if (ideal::in_brick(r, u, v) == golden) continue;
+      ++differ;
+      ASSERT_FALSE(golden) << u << " " << v;
+      const bool even_row = ((rv >> r.ph) & 1) == 0;
+      const int64_t ur = (even_row ? ru + pw / 2 : ru) & (pw - 1), vr = rv & (ph - 1);
+      EXPECT_TRUE(ur == r.mortar_w || vr == r.mortar_h) << u << " " << v;
+    }
+    std::cout << "brick pw " << r.pw << " ph " << r.ph << ": ideal and golden differ on "
+              << 100.0 * differ / kSamples << " % of off-grid points\n";
+  }
 }
 
 TEST(PerlinMaterialsTest, GasRules) {

@@ -1,10 +1,12 @@
 // The golden noise unit (golden/perlin/noise.hpp): the xor-table hash, the fade table, the
 // lerp, the hard cases (lattice points, cell boundaries, negative and very large coordinates,
 // the wrap, the accumulator's range) each with its stated expectation, and the error against
-// the ideal model within a bound derived from the widths.
+// the ideal model within a bound derived from the widths. The definition the two models share
+// (noise_definition.hpp: T's rows) on its own, and the ideal's own hash equal to golden's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <random>
@@ -17,6 +19,60 @@ namespace tmu::perlin {
 namespace {
 
 constexpr int64_t kOne = int64_t{1} << kCoordFracBits;  // 1.0 as raw SolidCoord
+
+// T's rows on their own: 12-bit rows of a matrix that is invertible over GF(2) (Gaussian
+// elimination finds a pivot in every column), so that T permutes the 12-bit values.
+TEST(PerlinDefinitionTest, XorRowsFormAnInvertibleMatrix) {
+  std::array<uint32_t, kLatticeBits> m = kXorRows;
+  for (const uint32_t row : m) EXPECT_LT(row, 1u << kLatticeBits);
+  for (int col = 0; col < kLatticeBits; ++col) {
+    const auto c = static_cast<size_t>(col);
+    const auto pivot =
+        std::find_if(m.begin() + col, m.end(), [col](uint32_t row) { return (row >> col) & 1u; });
+    ASSERT_NE(pivot, m.end()) << "no pivot in column " << col;
+    std::swap(m[c], *pivot);
+    for (size_t r = 0; r < m.size(); ++r) {
+      if (r != c && ((m[r] >> col) & 1u)) m[r] ^= m[c];
+    }
+  }
+  for (int j = 0; j < kLatticeBits; ++j) EXPECT_EQ(m[static_cast<size_t>(j)], 1u << j);
+}
+
+// Two implementations of one definition: the ideal's T (by columns) is golden's (by rows' parity)
+// on every 12-bit value, and both ignore the bits above.
+TEST(PerlinHashTest, IdealScrambleIsGoldensOnEveryValue) {
+  for (uint32_t x = 0; x < (1u << kLatticeBits); ++x) {
+    ASSERT_EQ(ideal::scramble(x), xor_table(x)) << x;
+    ASSERT_EQ(ideal::scramble(x | (0x5Au << kLatticeBits)), xor_table(x)) << x;
+  }
+}
+
+// The ideal's lattice value is golden's over 128, on every value of each index with the other
+// two drawn at random (3 x 4096 x 64 lattice points), and for indices beyond one period (the
+// ideal wraps them itself, golden takes them mod 4096). At a lattice point the ideal noise is
+// the lattice value exactly (the weights are sm(0) = 0).
+TEST(PerlinHashTest, IdealLatticeValueIsGoldensOverOneTwentyEight) {
+  std::mt19937_64 rng(13);
+  std::uniform_int_distribution<int64_t> any(-(int64_t{1} << 40), int64_t{1} << 40);
+  const auto golden = [](int64_t i, int64_t j, int64_t k) {
+    const auto m = [](int64_t x) { return static_cast<uint32_t>(x) & 0xFFF; };
+    return lattice_value(m(i), m(j), m(k)) / 128.0;
+  };
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int64_t x = 0; x < (int64_t{1} << kLatticeBits); ++x) {
+      for (int n = 0; n < 64; ++n) {
+        int64_t p[3] = {any(rng), any(rng), any(rng)};
+        p[axis] = n % 2 ? x : x - (n + 1) * 4096;  // in the first period, or below it
+        ASSERT_EQ(ideal::lattice_value(p[0], p[1], p[2]), golden(p[0], p[1], p[2]))
+            << p[0] << " " << p[1] << " " << p[2];
+      }
+    }
+  }
+  for (int n = 0; n < 2000; ++n) {
+    const int64_t i = any(rng) % 100000, j = any(rng) % 100000, k = any(rng) % 100000;
+    EXPECT_EQ(ideal::noise(double(i), double(j), double(k)), ideal::lattice_value(i, j, k));
+  }
+}
 
 TEST(PerlinHashTest, XorTableIsAPermutation) {
   std::set<uint32_t> seen;

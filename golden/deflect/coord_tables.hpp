@@ -29,12 +29,9 @@
 #include <vector>
 
 #include "deflect/sphere_grid.hpp"
+#include "deflect/view_frame_definition.hpp"
 
 namespace tmu::deflect {
-
-struct ViewFrame {
-  std::array<double, 3> side{1, 0, 0}, up{0, 1, 0}, dir{0, 0, 1};  // object space, unit
-};
 
 struct TableConfig {
   SphereGrid grid;

@@ -19,7 +19,14 @@ Angles to_angles(const glm::dvec3& v) {
 }
 
 Angles grid_angles(const SphereGrid& g, SphereAngle a) {
-  return {(a.phi & g.phi_mask()) * g.step(), theta_steps(g, a.theta) * g.step()};
+  // The port fields by their definition: phi counts nodes modulo 4Q; theta's magnitude is its
+  // value modulo Q, its sign the next bit (bits above are not part of the field).
+  // A signed integer count, so that -0 (sign set, magnitude 0) is the angle 0, not -0.0.
+  const int64_t q = g.quarter();
+  const int64_t mag = a.theta % q;
+  const bool negative = (a.theta / q) % 2 == 1;
+  return {static_cast<double>(a.phi % (4 * q)) * g.step(),
+          static_cast<double>(negative ? -mag : mag) * g.step()};
 }
 
 glm::dvec3 grid_vector(const SphereGrid& g, SphereAngle a) { return to_vector(grid_angles(g, a)); }

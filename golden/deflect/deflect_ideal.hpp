@@ -1,13 +1,17 @@
 // The ideal (double precision) reference of the deflection units: exact normals, exact
 // rotation of the bump vector onto the surface, exact reflection vector and map coordinates,
-// with the frames and angle conventions of sphere_grid.hpp and s2s_map.hpp. Tests and
-// `texsim sweep deflection` measure the golden units' angle errors against it.
+// with the frames and angle conventions of sphere_grid_definition.hpp and s2s_map.hpp. Tests
+// and `texsim sweep deflection` measure the golden units' angle errors against it.
+//
+// It shares with golden only the definitions of sphere_grid_definition.hpp (the grid's sizes
+// and step, the angles' port fields) and view_frame_definition.hpp (the view frame); all
+// arithmetic, the angles' decoding included, is its own.
 #pragma once
 
 #include <glm/vec3.hpp>
 
-#include "deflect/coord_tables.hpp"
-#include "deflect/sphere_grid.hpp"
+#include "deflect/sphere_grid_definition.hpp"
+#include "deflect/view_frame_definition.hpp"
 
 namespace tmu::deflect::ideal {
 

@@ -33,39 +33,21 @@
 // Fire's shaping: e^-v from a table of 512 entries round(e^(-k/32) 2^12) (UQ1.12, k = 0..511)
 // indexed by floor(v 32) clamped to 0..511: v <= 0 reads e^0 = 1 (the shaping starts at the
 // flame's base), v beyond 16 reads the last entry (e^-15.97, 0 at 12 bits).
+//
+// The registers and the colour tables are definitions, shared with the ideal model:
+// material_definition.hpp.
 #pragma once
 
-#include <array>
 #include <cstdint>
 
+#include "perlin/material_definition.hpp"
 #include "perlin/noise.hpp"
 
 namespace tmu::perlin {
 
-enum class MaterialKind : uint8_t { kMarble, kWood, kBrick, kFog, kCloud, kFire };
-constexpr int kColourEntries = 128;
 constexpr int kFireTableEntries = 512;
 constexpr int kFireTableFracBits = 5;  // v steps of 1/32
 constexpr int kIndexBits = 15;         // IQ7.8
-
-struct MaterialRegs {
-  MaterialKind kind = MaterialKind::kMarble;
-  uint32_t g_t = 32 << 8;                  // UQ8.8: entries per unit of T or F
-  uint32_t g_v = 8 << 8;                   // UQ8.8, marble: entries per unit of v
-  uint32_t g_r = 16 << 8;                  // UQ8.8, wood: entries per unit of u^2 + v^2
-  int32_t g_w = 2 << 8;                    // SQ8.8, wood: entries per unit of w (the cones' slope)
-  int32_t offset = 0;                      // IQ7.8, fire: index offset
-  uint32_t g_l = 255 << 8;                 // UQ8.8, fog and cloud: 8-bit levels per unit of F
-  int32_t cutoff = 0;                      // SQ2.14, cloud
-  int pw = 12, ph = 11;                    // brick: log2 of the periods in raw units (12: one unit)
-  int32_t mortar_w = 205, mortar_h = 205;  // brick: M_W, M_H in raw units (about 0.05)
-  friend bool operator==(const MaterialRegs&, const MaterialRegs&) = default;
-};
-
-struct ColourTables {
-  std::array<uint32_t, kColourEntries> main{};    // RGB888
-  std::array<uint32_t, kColourEntries> mortar{};  // brick only
-};
 
 // Throws std::invalid_argument naming the register for a value out of range.
 void check(const MaterialRegs& regs);

@@ -41,25 +41,16 @@
 // The thesis's formula block swaps the two names; its prose and Perlin's usage are as here.
 // The accumulator is SQ2.(10 + X): the shifts are exact, and the largest sum, 15/8 of the
 // largest |P|, fits (turbulence of four octaves of -1 is 1.875).
+//
+// The widths and T's rows are definitions, shared with the ideal model: noise_definition.hpp.
 #pragma once
 
-#include <array>
 #include <cstdint>
 
 #include "formats/formats.hpp"
+#include "perlin/noise_definition.hpp"
 
 namespace tmu::perlin {
-
-constexpr int kLatticeBits = 12;  // hash width: the lattice repeats every 4096 units
-constexpr int kLatticeValueBits = 8;
-constexpr int kCoordFracBits = 12;  // SolidCoord's fraction
-constexpr int kOctaves = 4;
-// T's rows, declared once in formats.def (the RTL reads them from tmu_pkg).
-constexpr std::array<uint32_t, kLatticeBits> kXorRows = {
-    formats::kNoiseXorRow0, formats::kNoiseXorRow1,  formats::kNoiseXorRow2,
-    formats::kNoiseXorRow3, formats::kNoiseXorRow4,  formats::kNoiseXorRow5,
-    formats::kNoiseXorRow6, formats::kNoiseXorRow7,  formats::kNoiseXorRow8,
-    formats::kNoiseXorRow9, formats::kNoiseXorRow10, formats::kNoiseXorRow11};
 
 struct NoiseConfig {
   int frac_bits = 8;        // F: coordinate fraction bits the unit uses, 1..12
