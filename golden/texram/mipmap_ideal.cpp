@@ -29,7 +29,7 @@ std::vector<LevelD> ideal_pyramid(const Level8& level0) {
       for (uint32_t x = 0; x < level.width; ++x) {
         const uint32_t x0 = x * bw, y0 = y * bh, x1 = x0 + bw, y1 = y0 + bh;
         const double sum = sat(x1, y1) - sat(x0, y1) - sat(x1, y0) + sat(x0, y0);
-        level.texels[size_t{y} * level.width + x] = sum / (double{bw} * bh);
+        level.texels[size_t{y} * level.width + x] = sum / (static_cast<double>(bw) * bh);
       }
     }
     out.push_back(std::move(level));
