@@ -9,6 +9,7 @@
 
 #include "blocks/registry.hpp"
 #include "blocks/trilinear/trilinear_block.hpp"
+#include "common/image.hpp"
 #include "harness/cosim.hpp"
 #include "harness/scoreboard.hpp"
 #include "render/render.hpp"
@@ -124,9 +125,20 @@ BlockLevels measure_levels(const std::string& block_name, size_t count, uint64_t
   return result;
 }
 
+// A level's figures are a C++ model's (ideal, golden), or a simulation's compared with golden.
+Mark mark_of_level(const std::string& level) {
+  return level == "ideal" || level == "golden" ? Mark::kModel : Mark::kSim;
+}
+
 SweepTable levels_table(const std::vector<BlockLevels>& results) {
-  SweepTable table({"block", "level", "transactions", "seconds per run", "transactions/s",
-                    "vs golden", "= golden", "note"});
+  SweepTable table({"block",
+                    "level",
+                    {"transactions", Mark::kSim},
+                    {"seconds per run", Mark::kSim},
+                    {"transactions/s", Mark::kSim},
+                    {"vs golden", Mark::kSim},
+                    {"= golden", Mark::kSim},
+                    "note"});
   for (const BlockLevels& b : results) {
     double golden_rate = 0;
     for (const LevelRun& r : b.runs) {
@@ -139,9 +151,14 @@ SweepTable levels_table(const std::vector<BlockLevels>& results) {
         continue;
       }
       const double rate = r.seconds > 0 ? static_cast<double>(r.transactions) / r.seconds : 0;
-      table.add({b.block, r.level, std::to_string(r.transactions), fmt::format("{:.3g}", r.seconds),
-                 fmt::format("{:.3g}", rate),
-                 golden_rate > 0 ? fmt::format("{:.3g}", rate / golden_rate) : "-", r.verdict,
+      const Mark m = mark_of_level(r.level);
+      table.add({b.block,
+                 r.level,
+                 {std::to_string(r.transactions), m},
+                 {fmt::format("{:.3g}", r.seconds), m},
+                 {fmt::format("{:.3g}", rate), m},
+                 {golden_rate > 0 ? fmt::format("{:.3g}", rate / golden_rate) : "-", m},
+                 r.verdict,
                  r.note});
     }
   }
@@ -165,7 +182,17 @@ std::vector<SceneLevel> measure_scene_levels(const std::string& scene, const std
                                std::string(render::name(level)) + ":\n" + text.str());
     }
     log << fmt::format(" {:.2f} s\n", report.total_s);
-    out.push_back({std::string(render::name(level)), report.total_s, report.units_s});
+    out.push_back({std::string(render::name(level)), report.total_s, report.units_s, "-"});
+  }
+  // hls and rtl against golden: their frames pixel for pixel (a --check would add golden's
+  // render to their wall time).
+  const auto frame = [&](const std::string& engine) {
+    return read_image(out_dir + "/" + engine + "/render.png");
+  };
+  const ImageRgb8 golden = frame("golden");
+  for (SceneLevel& r : out) {
+    if (r.engine == "hls" || r.engine == "rtl")
+      r.frame_verdict = frame(r.engine).pixels == golden.pixels ? "yes" : "NO";
   }
   return out;
 }
@@ -175,10 +202,18 @@ SweepTable scene_levels_table(const std::vector<SceneLevel>& results) {
   for (const SceneLevel& r : results) {
     if (r.engine == "golden") golden = r.seconds;
   }
-  SweepTable table({"engine", "wall s", "units s", "vs golden"});
+  SweepTable table({"engine",
+                    {"wall s", Mark::kSim},
+                    {"units s", Mark::kSim},
+                    {"vs golden", Mark::kSim},
+                    {"frame = golden", Mark::kSim}});
   for (const SceneLevel& r : results) {
-    table.add({r.engine, fmt::format("{:.2f}", r.seconds), fmt::format("{:.2f}", r.units_seconds),
-               golden > 0 ? fmt::format("{:.2f}", r.seconds / golden) : "-"});
+    const Mark m = mark_of_level(r.engine);
+    table.add({r.engine,
+               {fmt::format("{:.2f}", r.seconds), m},
+               {fmt::format("{:.2f}", r.units_seconds), m},
+               {golden > 0 ? fmt::format("{:.2f}", r.seconds / golden) : "-", m},
+               r.frame_verdict});
   }
   return table;
 }

@@ -47,9 +47,11 @@ struct SceneLevel {
   std::string engine;
   double seconds = 0;  // the whole render: front end, textures, units
   double units_seconds = 0;
+  std::string frame_verdict;  // hls, rtl: "yes" when its frame is golden's pixel for pixel; "-"
 };
 
-// Renders `scene` at ideal, golden, hls and rtl into `out_dir`; the wall time of each.
+// Renders `scene` at ideal, golden, hls and rtl into `out_dir`; the wall time of each, and
+// whether the hls and rtl frames equal golden's.
 std::vector<SceneLevel> measure_scene_levels(const std::string& scene, const std::string& out_dir,
                                              std::ostream& log);
 SweepTable scene_levels_table(const std::vector<SceneLevel>& results);

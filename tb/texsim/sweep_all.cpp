@@ -36,34 +36,39 @@ const Section kSections[] = {
      "Settings S,W,L: sub-texel, weight and lambda-fraction bits; 8,8,8 is the default. Error: "
      "golden against the ideal (double) sampler over 20 000 random requests (8-bit levels) and "
      "the PSNR of a rendered floor. Cost: cells (memories as flops) and logic (memories as RAM "
-     "macros), depth; cycles per pixel do not depend on the widths (1 for one-plane textures, 4 "
-     "for RGBA8888); simulation speed in million samples per second.",
+     "macros), depth; simulation speed in million samples per second, rtl where the build "
+     "verilated the setting. Cycles per pixel, not in the table, do not depend on the widths: "
+     "one access per byte plane (1 for one-plane textures, 4 for RGBA8888), a formula.",
      "texram.md"},
     {"Footprint setup (000 §10, eq. 19-20)", "footprint_setup",
      "Settings D,T,F: derivative bits, log2-table bits, log-fraction bits; 12,7,8 is the "
      "default. Error: lambda against the ideal setup (levels) and how often the probe count N "
-     "differs. Cost: cells, depth, and golden setups per second.",
+     "differs. Cost: cells, depth, and golden setups per second; rtl = golden where the build "
+     "verilated the setup at that setting.",
      "footprint.md"},
     {"Footprint assembly (000 §10)", "footprint",
      "Variants: isotropic trilinear, footprint assembly with at most N probes (N max 16 is the "
      "default), the ideal footprint unit, OpenImageIO's anisotropic filter, on a scene at "
      "grazing angles against a supersampled reference. Error: PSNR and max / mean error. Cost: "
-     "probes and cycles per pixel, wall time.",
+     "probes and cycles per pixel (the page model's prediction for golden's memory accesses, no "
+     "RTL run), wall time. Every figure is the row's model's.",
      "footprint.md"},
     {"Bump and reflection mapping (001 §4-5)", "deflection",
      "Settings A,E,M,W per sphere grid: grid bits, angle-table exponent and mantissa bits, "
      "deflection word; 9,4,5,10 (512x256) is the default. Error: angle of the deflected normal "
      "(N) and of the reflection vector (R) against the ideal, PSNR of the shaded views. Cost: "
-     "table bits, the deflection cache's hit rate and cycles per bumped pixel, golden time per "
-     "pixel, and the cells of the encoder, the deflection unit and the coordinate generator (n/a: "
-     "a setting beyond the RTL's port formats, a grid above 512x256 or W above 10, is golden "
-     "only).",
+     "table bits, the golden deflection cache's hit rate and cycles per bumped pixel (one plus "
+     "the map memory's latency per miss), golden time per pixel, whether each unit's RTL at the "
+     "setting equals golden on its block's stimulus, and the cells of the encoder, the "
+     "deflection unit and the coordinate generator (n/a: a setting beyond the RTL's port "
+     "formats, a grid above 512x256 or W above 10, is golden only).",
      "deflection.md"},
     {"Procedural noise (002 §4.1)", "perlin",
      "Settings F,S,B,X: fade-table index bits, fade-value bits, lerp weight bits, extra lerp "
      "bits; 8,8,8,4 is the default. Error: the noise P and the fractal sums against the ideal "
      "(double) noise, PSNR of each material of the procedural scene. Cost: fade-table bits, "
-     "golden time per sample, the noise unit's cells and depth. Cycles per sample: below.",
+     "golden time per sample, the noise unit's cells and depth (its RTL verilated at 8,8,8,4 "
+     "only). Cycles per sample: below, measured on the RTL.",
      "perlin.md"},
 };
 
@@ -143,6 +148,8 @@ std::string document(const SweepAllArgs& args, const fs::path& data, const std::
       "# What accuracy costs\n\n"
       "{} Each block's own document says how to read its figures; this one puts them side "
       "by side. The tables are also in `{}/` as CSV, which `scripts/plot_accuracy.py` plots.\n\n"
+      "Every figure is marked by how it was obtained: a column's header names its mark, a "
+      "cell obtained otherwise names its own (the CSV files hold the figures alone).\n\n{}\n"
       "## Model levels: what fidelity costs in simulation time\n\n"
       "One workload per block through every model level (`texsim levels`): transactions per "
       "second and the ratio to golden. Every level but ideal is compared with golden bit for "
@@ -150,9 +157,10 @@ std::string document(const SweepAllArgs& args, const fs::path& data, const std::
       "traced to an FST file; rtl-threads the block verilated with `--threads 2`; icarus the "
       "same RTL under Icarus Verilog.\n\n{}\n"
       "## The default scene at every engine\n\n`{}`, whole render (front end, textures, units), "
-      "`texsim render --engine E`:\n\n{}\n",
-      provenance(args, run), rel, read_file(data / "levels.md"), display_path(scene),
-      read_file(data / "scene_levels.md"));
+      "`texsim render --engine E`; hls and rtl compared with golden by their frames, pixel for "
+      "pixel:\n\n{}\n",
+      provenance(args, run), rel, marks_legend(), read_file(data / "levels.md"),
+      display_path(scene), read_file(data / "scene_levels.md"));
   for (const Section& s : kSections) {
     doc +=
         fmt::format("## {}\n\n{} Reading: [{}]({}).\n\n{}\n![{}]({}/{}.png)\n\n", s.title, s.about,

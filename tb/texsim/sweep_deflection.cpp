@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <map>
 #include <optional>
 #include <sstream>
 
@@ -279,16 +280,71 @@ SettingResult run_setting(const Setting& s, const Workload& work, const Deflecti
   return r;
 }
 
+// The three units' hardware at a setting against golden (sweep_support.hpp: check_rtl), on
+// each block's own stimulus: the encoder's ports carry the grid A = 9 only, the deflection
+// unit's block holds the A = 9 map; Verilator at the variants rtl/blocks.cmake builds, Icarus
+// at the encoder's and the coordinate generator's other widths.
+struct UnitChecks {
+  RtlCheck encoder, deflect, coord;
+  std::string text() const {
+    return fmt::format("enc {}; defl {}; coord {}", encoder.verdict(), deflect.verdict(),
+                       coord.verdict());
+  }
+};
+
+constexpr size_t kUnitItems = 20000;
+
+// Settings share units (every A = 9 setting the deflection unit): each unit at each of its
+// parameters runs once, `done` keeping the checks by unit and parameters.
+UnitChecks check_units(const Setting& s, std::map<std::string, RtlCheck>& done) {
+  const auto once = [&done](const std::string& key, const std::string& block,
+                            const tb::BlockOptions& o) {
+    auto it = done.find(key);
+    if (it == done.end()) it = done.emplace(key, check_rtl(block, o, kUnitItems)).first;
+    return it->second;
+  };
+  UnitChecks c;
+  tb::BlockOptions enc;
+  enc.encoder.grid.phi_bits = s.phi_bits;
+  enc.encoder.lut_exp = s.lut_exp;
+  enc.encoder.lut_mant = s.lut_mant;
+  c.encoder =
+      once(fmt::format("enc {},{},{}", s.phi_bits, s.lut_exp, s.lut_mant), "normal_encoder", enc);
+  if (s.phi_bits == deflect::SphereGrid{}.phi_bits) c.deflect = once("defl", "deflect", {});
+  tb::BlockOptions coord;
+  coord.coord_tables.grid.phi_bits = s.phi_bits;
+  coord.coord_tables.value_bits = s.value_bits;
+  c.coord = once(fmt::format("coord {},{}", s.phi_bits, s.value_bits), "coord_gen", coord);
+  return c;
+}
+
 }  // namespace
 
 void sweep_deflection(const DeflectionSweepArgs& args) {
   const std::vector<Setting> settings = parse_settings(args.settings);
-  SweepTable table({"A,E,M,W", "grid", "N max deg", "N mean deg", "R max deg", "R mean deg",
-                    "diffuse dB", "reflect dB", "table bits", "hit rate", "cyc/px", "hit rate flat",
-                    "golden ns/px", "enc cells", "defl cells", "coord cells"});
+  // The errors, hit rates and speed are the golden units'; the cycles a formula on golden's
+  // misses (one per bumped pixel plus the map memory's latency per miss), not a timed run.
+  SweepTable table({"A,E,M,W",
+                    "grid",
+                    {"N max deg", Mark::kModel},
+                    {"N mean deg", Mark::kModel},
+                    {"R max deg", Mark::kModel},
+                    {"R mean deg", Mark::kModel},
+                    {"diffuse dB", Mark::kModel},
+                    {"reflect dB", Mark::kModel},
+                    {"table bits", Mark::kFormula},
+                    {"hit rate", Mark::kModel},
+                    {"cyc/px", Mark::kFormula},
+                    {"hit rate flat", Mark::kModel},
+                    {"golden ns/px", Mark::kModel},
+                    {"rtl = golden", Mark::kSim},
+                    {"enc cells", Mark::kSynth},
+                    {"defl cells", Mark::kSynth},
+                    {"coord cells", Mark::kSynth}});
   const Workload work =
       args.scene.empty() ? sphere_workload(args.size) : scene_workload(args.scene);
   fmt::print("workload: {} ({} pixels through the chain)\n", work.name, work.samples.size());
+  std::map<std::string, RtlCheck> unit_checks;
   for (const Setting& s : settings) {
     const SettingResult r = run_setting(s, work, args);
     const SphereGrid g{s.phi_bits};
@@ -301,9 +357,11 @@ void sweep_deflection(const DeflectionSweepArgs& args) {
     const uint64_t lookups = r.hits + r.misses;
     // The RTL's ports are the package formats: the 512 x 256 grid at most, W <= 10.
     const bool in_rtl = s.phi_bits <= 9 && s.value_bits <= 10;
-    const auto synth = [&](const std::string& top, std::vector<std::pair<std::string, int>> p) {
-      if (!args.synth) return std::string("-");
-      return in_rtl ? synthesize(top, p).cells : std::string("n/a");
+    const UnitChecks checks = in_rtl ? check_units(s, unit_checks) : UnitChecks{};
+    const auto synth = [&](const std::string& top, std::vector<std::pair<std::string, int>> p,
+                           const RtlCheck& check) {
+      if (!args.synth) return Cell("-");
+      return in_rtl ? synth_cell(synthesize(top, p).cells, check.simulated()) : Cell("n/a");
     };
     table.add(
         {s.name(), fmt::format("{}x{}", g.phi_count(), g.phi_count() / 2),
@@ -316,11 +374,13 @@ void sweep_deflection(const DeflectionSweepArgs& args) {
                                          double(std::max<uint64_t>(1, r.bumped))),
          fmt::format("{:.3f}", double(r.flat_hits) /
                                    double(std::max<uint64_t>(1, r.flat_hits + r.flat_misses))),
-         fmt::format("{:.0f}", r.ns_per_pixel),
+         fmt::format("{:.0f}", r.ns_per_pixel), in_rtl ? checks.text() : "n/a",
          synth("tmu_normal_encoder",
-               {{"PhiBits", s.phi_bits}, {"LutExp", s.lut_exp}, {"LutMant", s.lut_mant}}),
-         synth("tmu_deflect", {{"PhiBits", s.phi_bits}}),
-         synth("tmu_coord_gen", {{"PhiBits", s.phi_bits}, {"ValueBits", s.value_bits}})});
+               {{"PhiBits", s.phi_bits}, {"LutExp", s.lut_exp}, {"LutMant", s.lut_mant}},
+               checks.encoder),
+         synth("tmu_deflect", {{"PhiBits", s.phi_bits}}, checks.deflect),
+         synth("tmu_coord_gen", {{"PhiBits", s.phi_bits}, {"ValueBits", s.value_bits}},
+               checks.coord)});
     fmt::print("{}\n", table.last_row_text());
   }
   table.print(args.markdown);

@@ -4,7 +4,8 @@
 // deflected normal and of the reflection vector against the ideal model, the PSNR of a
 // diffuse-shaded and of a reflection-mapped picture, the table sizes in bits, the MBR's hit
 // rate and the deflection unit's cycles per pixel (and the hit rate of the same sphere
-// without bumps: coherence the bumps destroy), and the Yosys cells of the three units
+// without bumps: coherence the bumps destroy), whether each unit's RTL at that setting equals
+// golden (where a Verilated model or Icarus takes it), and the Yosys cells of the three units
 // (n/a beyond the RTL's ports: A <= 9, W <= 10).
 //
 // Workload: a scene's fragments of the materials with a deflection chain (--scene; material

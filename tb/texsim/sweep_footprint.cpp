@@ -565,14 +565,17 @@ void sweep_footprint(const FootprintSweepArgs& args) {
       {fmt::format("reference k={}", k), compose(f, ref_rgba)}};
   std::vector<std::pair<std::string, ImageRgb8>> maps = {pictures.front()};
 
-  std::vector<std::string> header = {"variant", "model", "PSNR dB"};
+  // Every figure is a C++ model's (the row's model column names it), the cycles the page
+  // model's prediction: no hardware runs in this sweep.
+  std::vector<Column> header = {"variant", "model", {"PSNR dB", Mark::kModel}};
   if (f.scene.materials.size() > 1) {
-    for (const host::Material& m : f.scene.materials) header.push_back("PSNR " + m.name);
+    for (const host::Material& m : f.scene.materials)
+      header.emplace_back("PSNR " + m.name, Mark::kModel);
   }
-  header.push_back(fmt::format("PSNR ratio {:.0f}-{:.0f}", kAnisoLow, kAnisoHigh));
-  header.push_back(fmt::format("PSNR ratio>={:.0f}", kAnisoHigh));
+  header.emplace_back(fmt::format("PSNR ratio {:.0f}-{:.0f}", kAnisoLow, kAnisoHigh), Mark::kModel);
+  header.emplace_back(fmt::format("PSNR ratio>={:.0f}", kAnisoHigh), Mark::kModel);
   for (const char* h : {"max err", "mean err", "probes/px", "cycles/px", "wall s"})
-    header.emplace_back(h);
+    header.emplace_back(h, Mark::kModel);
   SweepTable table(header);
   for (const Variant& v : variants) {
     Outcome o;
@@ -599,7 +602,7 @@ void sweep_footprint(const FootprintSweepArgs& args) {
     const std::optional<double> cycles =
         o.cycles ? std::optional<double>(static_cast<double>(*o.cycles) / static_cast<double>(n))
                  : std::nullopt;
-    std::vector<std::string> row = {v.name, model, e.all.psnr()};
+    std::vector<Cell> row = {v.name, model, e.all.psnr()};
     if (f.scene.materials.size() > 1) {
       for (const Group& g : e.material) row.push_back(g.psnr());
     }

@@ -53,6 +53,23 @@ std::vector<footprint::Request> random_footprints(int count) {
   return out;
 }
 
+// The setup's RTL at `w` against golden: tmu_footprint_setup on its own where the build
+// verilated it (the default widths), else inside tmu_footprint (the footprint block's width
+// variants); neither has an Icarus level.
+std::string check_setup_rtl(const footprint::Widths& w, bool* simulated) {
+  constexpr size_t kItems = 20000;
+  tb::BlockOptions o;
+  o.fp_widths = w;
+  RtlCheck check = check_rtl("footprint_setup", o, kItems);
+  std::string where;
+  if (check.simulator.empty()) {
+    check = check_rtl("footprint", o, kItems);
+    where = " (in tmu_footprint)";
+  }
+  *simulated = check.simulated();
+  return check.simulator.empty() ? check.verdict() : check.verdict() + where;
+}
+
 }  // namespace
 
 void sweep_footprint_setup(const FootprintSetupSweepArgs& args) {
@@ -69,8 +86,15 @@ void sweep_footprint_setup(const FootprintSetupSweepArgs& args) {
       "footprint setup: {} random footprints (ratio 1..64, lengths 1/8..4096 texels), "
       "N max 16, q rule heights; lambda error in levels where N agrees\n",
       footprints.size());
-  SweepTable table({"D,T,F", "lambda max err", "lambda mean err", "N differs %",
-                    "golden M setups/s", "cells", "logic", "depth"});
+  SweepTable table({"D,T,F",
+                    {"lambda max err", Mark::kModel},
+                    {"lambda mean err", Mark::kModel},
+                    {"N differs %", Mark::kModel},
+                    {"golden M setups/s", Mark::kModel},
+                    {"rtl = golden", Mark::kSim},
+                    {"cells", Mark::kSynth},
+                    {"logic", Mark::kSynth},
+                    {"depth", Mark::kSynth}});
   for (const footprint::Widths& w : settings) {
     footprint::Config c;
     c.log2_max_probes = 4;
@@ -99,13 +123,16 @@ void sweep_footprint_setup(const FootprintSetupSweepArgs& args) {
                                                         {"TableBits", w.table_bits},
                                                         {"LogFracBits", w.log_frac}})
                    : SynthFigures{};
+    bool simulated = false;
+    const std::string verdict = check_setup_rtl(w, &simulated);
     table.add({fmt::format("{},{},{}", w.deriv_bits, w.table_bits, w.log_frac),
                fmt::format("{:.4f}", worst),
                fmt::format("{:.5f}", sum / static_cast<double>(std::max<size_t>(agree, 1))),
                fmt::format("{:.3f}", 100.0 * static_cast<double>(differ) /
                                          static_cast<double>(agree + differ)),
                fmt::format("{:.1f}", static_cast<double>(footprints.size()) / seconds / 1e6),
-               synth.cells, synth.logic, synth.depth});
+               verdict, synth_cell(synth.cells, simulated), synth_cell(synth.logic, simulated),
+               synth_cell(synth.depth, simulated)});
     fmt::print("{}\n", table.last_row_text());
   }
   table.print(args.markdown);

@@ -1,8 +1,9 @@
 // `texsim sweep footprint-setup`: the footprint unit's setup (000 §10 eq. 19-20: lengths, the
 // ratio and the logarithm) at each width setting D,T,F (footprint::Widths: derivative bits,
 // log2 table bits, log fraction bits): lambda's error and how often N differs from the ideal
-// setup's, on random footprints; the golden setup's speed; the Yosys figures of
-// tmu_footprint_setup at that setting (docs/footprint.md).
+// setup's, on random footprints; the golden setup's speed; whether the RTL at that setting,
+// where the build verilated it, equals golden; the Yosys figures of tmu_footprint_setup at that
+// setting (docs/footprint.md).
 #pragma once
 
 #include <string>

@@ -55,6 +55,9 @@ CarryBits carry_bits(int carry) {
   return b;
 }
 
+// Random items of the generator's check: texels of small random frames.
+constexpr size_t kMipgenItems = 20000;
+
 }  // namespace
 
 void sweep_mipgen(const MipgenSweepArgs& args) {
@@ -78,9 +81,16 @@ void sweep_mipgen(const MipgenSweepArgs& args) {
       "mipgen: {} ({} x {}), R, G and B; each level against the exact box mean of level 0, in "
       "8-bit levels; bits at 1024 x 1024 (MaxLog2 10)\n",
       args.image.empty() ? "the photo-like field" : args.image, image.width, image.height);
-  std::vector<std::string> header = {"carry", "max abs err", "top mean err"};
-  for (size_t l = 1; l <= levels; ++l) header.push_back(fmt::format("L{} mean/max", l));
-  for (const char* h : {"FIFO bits", "hold bits", "cells", "logic", "depth"}) header.push_back(h);
+  // The errors are golden's pyramid's, the bits a formula; the generator is verilated at the
+  // default (exact) carry only, and its block has no carry option (no Icarus run elsewhere).
+  std::vector<Column> header = {
+      "carry", {"max abs err", Mark::kModel}, {"top mean err", Mark::kModel}};
+  for (size_t l = 1; l <= levels; ++l)
+    header.emplace_back(fmt::format("L{} mean/max", l), Mark::kModel);
+  header.emplace_back("FIFO bits", Mark::kFormula);
+  header.emplace_back("hold bits", Mark::kFormula);
+  header.emplace_back("rtl = golden", Mark::kSim);
+  for (const char* h : {"cells", "logic", "depth"}) header.emplace_back(h, Mark::kSynth);
   SweepTable table(header);
   for (const int carry : carries) {
     std::vector<texram::LevelError> e(levels);
@@ -94,18 +104,21 @@ void sweep_mipgen(const MipgenSweepArgs& args) {
     }
     double worst = 0;
     for (const texram::LevelError& le : e) worst = std::max(worst, le.max_abs);
-    std::vector<std::string> row = {std::to_string(carry), fmt::format("{:.3f}", worst),
-                                    fmt::format("{:+.3f}", e.back().mean)};
+    std::vector<Cell> row = {std::to_string(carry), fmt::format("{:.3f}", worst),
+                             fmt::format("{:+.3f}", e.back().mean)};
     for (const texram::LevelError& le : e) {
       row.push_back(fmt::format("{:+.2f}/{:.2f}", le.mean, le.max_abs));
     }
     const CarryBits bits = carry_bits(carry);
     const SynthFigures synth =
         args.synth ? synthesize("tmu_mipgen", {{"CarryBits", carry}}) : SynthFigures{};
-    for (const std::string& s : {std::to_string(bits.fifo), std::to_string(bits.hold), synth.cells,
-                                 synth.logic, synth.depth}) {
-      row.push_back(s);
-    }
+    const RtlCheck rtl =
+        carry == texram::kExactCarry ? check_rtl("mipgen", {}, kMipgenItems) : RtlCheck{};
+    row.push_back(std::to_string(bits.fifo));
+    row.push_back(std::to_string(bits.hold));
+    row.push_back(rtl.verdict());
+    for (const std::string& s : {synth.cells, synth.logic, synth.depth})
+      row.push_back(synth_cell(s, rtl.simulated()));
     table.add(row);
     fmt::print("{}\n", table.last_row_text());
   }

@@ -1,8 +1,9 @@
 // `texsim sweep mipgen`: the mipmap generator's rounding rule (000 §12; texram/mipmap.hpp) at
 // each carry: every level's error against the ideal pyramid (the exact box means of level 0,
 // texram/mipmap_ideal.hpp) on the R, G and B planes of an image, what the carried bits cost in
-// the generator's registers and line FIFOs (at the largest texture, 1024 a side), and the Yosys
-// figures of tmu_mipgen at that CarryBits (docs/texram.md, "The pyramid's rounding").
+// the generator's registers and line FIFOs (at the largest texture, 1024 a side), whether the
+// RTL equals golden (verilated at the exact carry only), and the Yosys figures of tmu_mipgen at
+// that CarryBits (docs/texram.md, "The pyramid's rounding").
 #pragma once
 
 #include <string>

@@ -77,6 +77,14 @@ int64_t slice_u(int x, int n) { return (int64_t{4} * x * kOne) / n - 2 * kOne; }
 int64_t slice_v(int y, int n) { return (int64_t{4} * (n - 1 - y) * kOne) / n - kOne / 2; }
 constexpr int64_t kSliceW = 1515;  // 0.37 units
 
+// A run's throughput: clocks from its first output to its last, per output after the first.
+std::string cycles_per_output(const tb::RunResult& run) {
+  const auto& at = run.output_cycles;
+  if (at.size() < 2) return "-";
+  return fmt::format(
+      "{:.2f}", static_cast<double>(at.back() - at.front()) / static_cast<double>(at.size() - 1));
+}
+
 }  // namespace
 
 void sweep_perlin(const PerlinSweepArgs& args) {
@@ -84,9 +92,18 @@ void sweep_perlin(const PerlinSweepArgs& args) {
   const std::string scene =
       args.scene.empty() ? std::string(TMU_SOURCE_DIR) + "/scenes/procedural.json" : args.scene;
   const std::vector<NamedMaterial> materials = scene_materials(scene);
-  std::vector<std::string> header = {"F,S,B,X", "fade bits", "P max", "P mean", "sums max"};
-  for (const NamedMaterial& m : materials) header.push_back(m.name + " dB");
-  for (const char* h : {"golden ns/sample", "noise cells", "depth"}) header.push_back(h);
+  // The errors and the speed are golden's; the noise unit's RTL is verilated at the default
+  // widths only (its block has no width options, hence no Icarus run at the others).
+  std::vector<Column> header = {"F,S,B,X",
+                                {"fade bits", Mark::kFormula},
+                                {"P max", Mark::kModel},
+                                {"P mean", Mark::kModel},
+                                {"sums max", Mark::kModel}};
+  for (const NamedMaterial& m : materials) header.emplace_back(m.name + " dB", Mark::kModel);
+  header.emplace_back("golden ns/sample", Mark::kModel);
+  header.emplace_back("rtl = golden", Mark::kSim);
+  header.emplace_back("noise cells", Mark::kSynth);
+  header.emplace_back("depth", Mark::kSynth);
   SweepTable table(header);
 
   const int n = args.size;
@@ -110,7 +127,7 @@ void sweep_perlin(const PerlinSweepArgs& args) {
     }
     const std::string tag =
         fmt::format("{},{},{},{}", c.frac_bits, c.fade_index_bits, c.fade_bits, c.lerp_extra_bits);
-    std::vector<std::string> row = {
+    std::vector<Cell> row = {
         tag, fmt::format("{}", (uint64_t{1} << c.fade_index_bits) * (c.fade_bits + 1)),
         fmt::format("{:.4f}", p_max), fmt::format("{:.5f}", p_sum / args.points),
         fmt::format("{:.4f}", s_max)};
@@ -135,6 +152,8 @@ void sweep_perlin(const PerlinSweepArgs& args) {
       }
     }
     row.push_back(fmt::format("{:.0f}", golden_s / args.points * 1e9));
+    const RtlCheck rtl = c == perlin::NoiseConfig{} ? check_rtl("noise", {}, 20000) : RtlCheck{};
+    row.push_back(rtl.verdict());
     // Yosys applies the parameters one at a time and the module checks S <= F at each step:
     // lower S before F, raise F before S.
     std::vector<std::pair<std::string, int>> params = {{"FadeBits", c.fade_bits},
@@ -147,19 +166,30 @@ void sweep_perlin(const PerlinSweepArgs& args) {
       params.insert(params.begin(), {f_param, s_param});
     }
     const SynthFigures f = args.synth ? synthesize("tmu_noise", params) : SynthFigures{};
-    row.push_back(f.cells);
-    row.push_back(f.depth);
+    row.push_back(synth_cell(f.cells, rtl.simulated()));
+    row.push_back(synth_cell(f.depth, rtl.simulated()));
     table.add(row);
     fmt::print("{}\n", table.last_row_text());
   }
   table.print(args.markdown);
 
-  // Area against speed at the default widths: one sample per clock or one per four.
-  SweepTable configs({"fractal unit", "noise units", "cycles/sample", "cells", "depth"});
-  for (const auto& [top, units, cycles] :
-       {std::tuple{"tmu_fractal_pipelined", 4, 1}, std::tuple{"tmu_fractal_shared", 1, 4}}) {
+  // Area against speed at the default widths: one sample per clock or one per four, as the
+  // Verilated model of each runs them against golden at full rate.
+  SweepTable configs({"fractal unit",
+                      "noise units",
+                      {"cycles/sample", Mark::kSim},
+                      {"rtl = golden", Mark::kSim},
+                      {"cells", Mark::kSynth},
+                      {"depth", Mark::kSynth}});
+  for (const auto& [top, units, shared] :
+       {std::tuple{"tmu_fractal_pipelined", 4, false}, std::tuple{"tmu_fractal_shared", 1, true}}) {
+    tb::BlockOptions o;
+    o.fractal_shared = shared;
+    const RtlCheck rtl = check_rtl("fractal", o, 20000);
     const SynthFigures f = args.synth ? synthesize(top, {}) : SynthFigures{};
-    configs.add({top, fmt::format("{}", units), fmt::format("{}", cycles), f.cells, f.depth});
+    configs.add({top, fmt::format("{}", units), rtl.simulated() ? cycles_per_output(rtl.run) : "-",
+                 rtl.verdict(), synth_cell(f.cells, rtl.simulated()),
+                 synth_cell(f.depth, rtl.simulated())});
   }
   std::string configs_md = args.markdown;
   if (const auto dot = configs_md.rfind(".md"); dot != std::string::npos) {

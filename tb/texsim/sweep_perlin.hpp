@@ -2,9 +2,10 @@
 // (coordinate fraction bits, fade-table index and entry bits, lerp fraction bits beyond the
 // lattice values'): the noise's and the fractal sums' error against the ideal (max, mean),
 // the PSNR of each of the scene's procedural materials on a slice of solid space, the fade
-// table's bits, the golden model's ns per sample and the Yosys cells and depth of tmu_noise at
-// that setting. Then the two fractal configurations at the default setting: cells against
-// cycles per sample.
+// table's bits, the golden model's ns per sample, whether the RTL equals golden (verilated at
+// the default setting only) and the Yosys cells and depth of tmu_noise at that setting. Then
+// the two fractal configurations at the default setting: cells against cycles per sample, both
+// measured on their RTL against golden.
 #pragma once
 
 #include <string>

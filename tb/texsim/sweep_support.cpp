@@ -31,19 +31,83 @@ std::string line_of(const std::vector<std::string>& cells, const std::vector<siz
 
 }  // namespace
 
+std::string mark_name(Mark mark) {
+  switch (mark) {
+    case Mark::kNone:
+      return "";
+    case Mark::kSim:
+      return "sim";
+    case Mark::kSynth:
+      return "synth";
+    case Mark::kSynthOnly:
+      return "synth only";
+    case Mark::kFormula:
+      return "formula";
+    case Mark::kModel:
+      return "model";
+  }
+  return "";
+}
+
+std::string marks_legend() {
+  return "- **[sim]**: measured on a hardware model (the Verilated RTL, Icarus Verilog or the "
+         "SystemC hls model) whose outputs were compared bit for bit with golden in this run; the "
+         "table's `= golden` column says on what and with which result.\n"
+         "- **[synth]**: Yosys (`scripts/synth.sh`) on the RTL at the row's setting, RTL that a "
+         "simulation in this run showed equal to golden at that setting.\n"
+         "- **[synth only]**: Yosys on RTL that no simulation in this run showed equal to golden "
+         "at that setting (mostly: the build has no model of it): the figures of a design nobody "
+         "checked there.\n"
+         "- **[formula]**: computed from the setting or from counts (table sizes, cycles from "
+         "counted misses), not measured.\n"
+         "- **[model]**: from a C++ model (golden, ideal, the page model's timing, OpenImageIO), "
+         "not from the hardware; golden's outputs are the hardware's only where the row's "
+         "`= golden` says yes.\n";
+}
+
+std::vector<std::string> SweepTable::header_text() const {
+  std::vector<std::string> out;
+  for (const Column& c : columns_) {
+    out.push_back(c.mark == Mark::kNone ? c.name
+                                        : fmt::format("{} [{}]", c.name, mark_name(c.mark)));
+  }
+  return out;
+}
+
+std::vector<std::string> SweepTable::row_text(const std::vector<Cell>& row) const {
+  std::vector<std::string> out;
+  for (size_t i = 0; i < row.size(); ++i) {
+    const Mark column = i < columns_.size() ? columns_[i].mark : Mark::kNone;
+    const Cell& c = row[i];
+    out.push_back(c.mark == Mark::kNone || c.mark == column
+                      ? c.text
+                      : fmt::format("{} [{}]", c.text, mark_name(c.mark)));
+  }
+  return out;
+}
+
+std::vector<std::vector<std::string>> SweepTable::rows_text() const {
+  std::vector<std::vector<std::string>> out;
+  for (const auto& r : rows_) out.push_back(row_text(r));
+  return out;
+}
+
 std::string SweepTable::last_row_text() const {
-  return rows_.empty() ? "" : line_of(rows_.back(), widths_of(header_, rows_));
+  const auto rows = rows_text();
+  return rows.empty() ? "" : line_of(rows.back(), widths_of(header_text(), rows));
 }
 
 void SweepTable::print(const std::string& markdown_path) const {
-  const auto w = widths_of(header_, rows_);
-  fmt::print("\n{}\n", line_of(header_, w));
-  for (const auto& r : rows_) fmt::print("{}\n", line_of(r, w));
+  const std::vector<std::string> header = header_text();
+  const auto rows = rows_text();
+  const auto w = widths_of(header, rows);
+  fmt::print("\n{}\n", line_of(header, w));
+  for (const auto& r : rows) fmt::print("{}\n", line_of(r, w));
   if (markdown_path.empty()) return;
-  std::string md = "| " + fmt::format("{}", fmt::join(header_, " | ")) + " |\n|";
-  for (size_t i = 0; i < header_.size(); ++i) md += "---|";
+  std::string md = "| " + fmt::format("{}", fmt::join(header, " | ")) + " |\n|";
+  for (size_t i = 0; i < header.size(); ++i) md += "---|";
   md += "\n";
-  for (const auto& r : rows_) md += "| " + fmt::format("{}", fmt::join(r, " | ")) + " |\n";
+  for (const auto& r : rows) md += "| " + fmt::format("{}", fmt::join(r, " | ")) + " |\n";
   write_file_atomically(markdown_path, md);
   std::string csv;
   auto csv_line = [&csv](const std::vector<std::string>& cells) {
@@ -55,8 +119,14 @@ void SweepTable::print(const std::string& markdown_path) const {
     }
     csv += "\n";
   };
-  csv_line(header_);
-  for (const auto& r : rows_) csv_line(r);
+  std::vector<std::string> names;
+  for (const Column& c : columns_) names.push_back(c.name);
+  csv_line(names);
+  for (const auto& r : rows_) {
+    std::vector<std::string> figures;
+    for (const Cell& c : r) figures.push_back(c.text);
+    csv_line(figures);
+  }
   const std::string csv_path = std::filesystem::path(markdown_path).replace_extension(".csv");
   write_file_atomically(csv_path, csv);
   fmt::print("wrote {} and {}\n", markdown_path, csv_path);
@@ -96,6 +166,11 @@ SynthFigures synthesize(const std::string& top,
   ++(cached ? counts.cached : counts.run);
   if (::pclose(pipe) != 0) return {"?", "?", "?"};
   return f;
+}
+
+Cell synth_cell(const std::string& figure, bool simulated) {
+  if (figure == "-" || figure == "?" || figure == "n/a") return {figure};
+  return {figure, simulated ? Mark::kSynth : Mark::kSynthOnly};
 }
 
 std::string RtlSpeed::text() const {
