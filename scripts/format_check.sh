@@ -9,6 +9,12 @@ if [[ "${1:-}" == "--fix" ]]; then
   clang-format -i "${files[@]}"
   exit 0
 fi
+# One clang-format process for all files (a process per file took 13 s instead of 2); only when
+# that fails, one per file to name them.
+if clang-format --dry-run --Werror "${files[@]}" >/dev/null 2>&1; then
+  echo "format: ${#files[@]} files clean"
+  exit 0
+fi
 bad=()
 for f in "${files[@]}"; do
   clang-format --dry-run --Werror "$f" >/dev/null 2>&1 || bad+=("$f")

@@ -86,6 +86,18 @@ std::vector<std::array<int32_t, 3>> sphere_map_coords(const std::vector<deflect:
   return uvl;
 }
 
+// A bump texel's angles by the format's definition (deflect/bump_map.hpp), in the ideal's own
+// arithmetic: phi = R + 256 (B & 0x7F) nodes modulo 4Q, |theta| = min(G, Q - 1) nodes, negative
+// when bit 7 of B is set.
+deflect::ideal::Angles ideal_bump_angles(const dvec4& texel) {
+  const auto r = static_cast<int64_t>(texel.r), g = static_cast<int64_t>(texel.g),
+             b = static_cast<int64_t>(texel.b);
+  const auto q = static_cast<int64_t>(kChainGrid.quarter());
+  const int64_t phi = (r + 256 * (b & 0x7F)) % (4 * q), mag = std::min(g, q - 1);
+  return {static_cast<double>(phi) * kChainGrid.step(),
+          static_cast<double>((b & 0x80) ? -mag : mag) * kChainGrid.step()};
+}
+
 }  // namespace
 
 std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun>& units,
@@ -263,12 +275,9 @@ std::vector<dvec4> ideal_effect_chain(const ChainInput& in,
     const host::Fragment& f = fragments[in.frags[k]];
     dvec3 n = glm::normalize(f.normal);
     if (maps.bump) {
-      const dvec4 t = sample(maps.bump, f.uv.x, f.uv.y, 0);  // nearest: a stored texel
-      const Rgb8 texel{static_cast<uint8_t>(t.r), static_cast<uint8_t>(t.g),
-                       static_cast<uint8_t>(t.b)};
-      const auto bump =
-          deflect::ideal::grid_angles(kChainGrid, deflect::unpack_bump(kChainGrid, texel));
-      n = deflect::ideal::deflect(deflect::ideal::to_angles(n), bump);
+      // nearest: a stored texel, the host's encoding of the bump, taken as given
+      const dvec4 t = sample(maps.bump, f.uv.x, f.uv.y, 0);
+      n = deflect::ideal::deflect(deflect::ideal::to_angles(n), ideal_bump_angles(t));
     }
     const deflect::ideal::Coords c = deflect::ideal::map_coords(view, n);
     dvec4 colour;
