@@ -57,9 +57,10 @@ using Progress = std::function<void(uint64_t done, uint64_t total)>;
 class Pipeline {
  public:
   // Loads every material's texture. A mipgen chain's mipgen unit runs (at `level`) when its
-  // material's first fragments are shaded, so a material without any builds none; ideal keeps
-  // the host pyramid, which is what the generator's rule computes. Throws InputError naming
-  // the scene and the material's texture field.
+  // material's first fragments are shaded, so a material without any builds none; ideal builds
+  // no unit and samples each texture's source through its own exact pyramid
+  // (texram/trilinear_ideal.hpp). Throws InputError naming the scene and the material's
+  // texture field.
   Pipeline(const host::Scene& scene, Level level);
 
   Level level() const { return level_; }
