@@ -2,7 +2,8 @@
 # The ideal models share no arithmetic with golden (issue 16 item 1): every
 # golden/*/*_ideal.{hpp,cpp} includes only standard headers, <glm/...>, ideal headers
 # (*_ideal.hpp) and the definitions-only headers listed below, and those headers include only
-# standard headers and each other, so that nothing reaches golden's arithmetic through them.
+# standard headers and each other, so that nothing reaches golden's arithmetic through them;
+# and each of those headers is listed (by its path under golden/) in a document under docs/.
 # Prints each violation as `FILE:LINE includes HEADER (not a definition header)` and exits 1
 # if there is any. Usage: tests/ideal_independence_test.sh
 set -uo pipefail
@@ -79,6 +80,11 @@ for f in "${definitions[@]}"; do
   fi
   found=$(violations "$f" definition)
   [[ -n $found ]] && echo "$found" && failures=$((failures + $(wc -l <<<"$found")))
+  # A shared definition is written down where its block is described, with its test.
+  if ! grep -q "$f" "$root"/docs/*.md; then
+    echo "golden/$f: a definition header no document under docs/ lists"
+    failures=$((failures + 1))
+  fi
 done
 for f in "${pending[@]}"; do
   [[ -f $f ]] || { echo "golden/$f: pending, but there is no such file" && failures=$((failures + 1)); }
