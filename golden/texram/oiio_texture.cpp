@@ -2,7 +2,6 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -46,9 +45,7 @@ void write_oiio_mip_texture(const std::string& path, const TexramTexture& textur
 
 void write_oiio_mip_texture(const std::string& path, const IdealTexture& texture,
                             const SamplerConfig& config) {
-  const auto size = [&](int l) {
-    return std::pair(std::max(texture.width >> l, 1u), std::max(texture.height >> l, 1u));
-  };
+  const auto size = [&](int l) { return std::pair(texture.width_of(l), texture.height_of(l)); };
   write_mip_levels(path, texture.levels(), size, [&](int l) {
     const auto [w, h] = size(l);
     std::vector<float> rgba;

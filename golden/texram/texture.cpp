@@ -55,13 +55,6 @@ ImageRgb8 level_image(const std::array<Pyramid8, 3>& rgb, size_t level) {
   return img;
 }
 
-// A texture whose levels above 0 are the box pyramid of level 0: its source keeps level 0 only.
-TexramTexture from_level0(TexramTexture t) {
-  for (Pyramid8& plane : t.source.planes) plane.resize(1);
-  t.source.box_levels = true;
-  return t;
-}
-
 }  // namespace
 
 Level8 plane_of(const ImageRgb8& image, uint8_t (*pick)(Rgb8)) {
@@ -70,15 +63,22 @@ Level8 plane_of(const ImageRgb8& image, uint8_t (*pick)(Rgb8)) {
   return l;
 }
 
-TexramTexture texture_from_planes(TexelKind kind, const std::vector<Pyramid8>& planes,
-                                  const Clut32& clut) {
+namespace {
+
+// The texture of `planes` (every level). box_levels: the levels above 0 are the box pyramid of
+// level 0 (the imports build them so), and its source keeps level 0 alone.
+TexramTexture texture_of_pyramids(TexelKind kind, const std::vector<Pyramid8>& planes,
+                                  const Clut32& clut, bool box_levels) {
   if (planes.empty() || planes.front().empty())
     throw std::invalid_argument("texture_from_planes: no planes");
   const Level8& l0 = planes.front().front();
   const Geometry g(log2_side(l0.width, "width"), log2_side(l0.height, "height"),
                    static_cast<int>(planes.size()));
   TexramTexture tex{
-      kind, g, empty_banks(g), clut, {kind, l0.width, l0.height, planes, false, false, clut}};
+      kind, g, empty_banks(g), clut, {kind, l0.width, l0.height, {}, box_levels, false, clut}};
+  for (const Pyramid8& plane : planes) {
+    tex.source.planes.push_back(box_levels ? Pyramid8{plane.front()} : plane);
+  }
   for (size_t p = 0; p < planes.size(); ++p) {
     if (planes[p].size() != static_cast<size_t>(g.levels()) ||
         planes[p].front().width != l0.width || planes[p].front().height != l0.height) {
@@ -93,6 +93,18 @@ TexramTexture texture_from_planes(TexelKind kind, const std::vector<Pyramid8>& p
     }
   }
   return tex;
+}
+
+// A texture whose levels above 0 are the box pyramid of level 0.
+TexramTexture texture_of_box_pyramids(TexelKind kind, const std::vector<Pyramid8>& planes) {
+  return texture_of_pyramids(kind, planes, {}, true);
+}
+
+}  // namespace
+
+TexramTexture texture_from_planes(TexelKind kind, const std::vector<Pyramid8>& planes,
+                                  const Clut32& clut) {
+  return texture_of_pyramids(kind, planes, clut, false);
 }
 
 TexramTexture texture_from_ccc(const std::vector<ccc::Texture>& levels) {
@@ -152,19 +164,19 @@ TexramTexture import_image(const ImageRgb8& image, TexelKind kind, int single_ch
   log2_side(h, "height");
   switch (kind) {
     case TexelKind::kLuminance:
-      return from_level0(texture_from_planes(kind, {build_pyramid(plane_of(image, luma))}));
+      return texture_of_box_pyramids(kind, {build_pyramid(plane_of(image, luma))});
     case TexelKind::kSingle: {
       if (single_channel < 0 || single_channel > 3)
         throw std::invalid_argument("single channel must be 0..3");
       if (single_channel == 3)
-        return from_level0(texture_from_planes(kind, {build_pyramid(constant_plane(w, h, 255))}));
-      return from_level0(
-          texture_from_planes(kind, {rgb_pyramids(image)[static_cast<size_t>(single_channel)]}));
+        return texture_of_box_pyramids(kind, {build_pyramid(constant_plane(w, h, 255))});
+      return texture_of_box_pyramids(kind,
+                                     {rgb_pyramids(image)[static_cast<size_t>(single_channel)]});
     }
     case TexelKind::kTrueColour: {
       auto rgb = rgb_pyramids(image);
-      return from_level0(texture_from_planes(
-          kind, {rgb[0], rgb[1], rgb[2], build_pyramid(constant_plane(w, h, 255))}));
+      return texture_of_box_pyramids(
+          kind, {rgb[0], rgb[1], rgb[2], build_pyramid(constant_plane(w, h, 255))});
     }
     case TexelKind::kIndex: {
       std::vector<ccc::WeightedColour> colours;

@@ -8,8 +8,6 @@
 namespace tmu::texram {
 namespace {
 
-uint32_t level_side(uint32_t side, int level) { return std::max(side >> level, 1u); }
-
 std::array<double, 4> unpack(uint32_t c) {
   return {double(channel(c, 0)), double(channel(c, 1)), double(channel(c, 2)),
           double(channel(c, 3))};
@@ -53,7 +51,7 @@ std::array<double, 4> level_sample(const IdealTexture& t, const SamplerConfig& c
                                    double v, int l, bool nearest) {
   const double scale = std::ldexp(1.0, -l);
   const double ul = u * scale, vl = v * scale;
-  const uint32_t w = level_side(t.width, l), h = level_side(t.height, l);
+  const uint32_t w = t.width_of(l), h = t.height_of(l);
   auto texel = [&](double x, double y) {
     const Resolved rx = resolve(x, w, config.border_u), ry = resolve(y, h, config.border_v);
     if (rx.outside || ry.outside) return unpack(config.border_rgba);
@@ -95,7 +93,7 @@ IdealTexture ideal_texture(const SourceTexels& s) {
     if (levels.size() != t.planes[0].size()) fail("the planes have different level counts");
     for (size_t l = 0; l < levels.size(); ++l) {
       const int li = static_cast<int>(l);
-      const uint32_t w = level_side(s.width, li), h = level_side(s.height, li);
+      const uint32_t w = t.width_of(li), h = t.height_of(li);
       const uint32_t gw = s.block_grid ? (w + 3) / 4 : w, gh = s.block_grid ? (h + 3) / 4 : h;
       if (levels[l].width != gw || levels[l].height != gh)
         fail("level " + std::to_string(l) + " has the wrong size");

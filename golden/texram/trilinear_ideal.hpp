@@ -8,6 +8,7 @@
 // OpenImageIO's TextureSystem (tests/texram_ideal_oiio_test.cpp).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -27,6 +28,9 @@ struct IdealTexture {
   std::vector<std::vector<LevelD>> planes;
   std::array<uint32_t, 256> clut{};
   int levels() const { return planes.empty() ? 0 : static_cast<int>(planes[0].size()); }
+  // Level l's sides in texels (a side halves down to 1).
+  uint32_t width_of(int level) const { return std::max(width >> level, 1u); }
+  uint32_t height_of(int level) const { return std::max(height >> level, 1u); }
 };
 
 // Throws std::invalid_argument when the source is inconsistent (no planes, level sizes off, box

@@ -243,7 +243,7 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
         UnitRun& unit = pipe.units()[culprit->first];
         const tb::WaveWindow w =
             tb::dump_waveform(*unit.engine("rtl"), unit.items, tb::RunOptions{}, culprit->second,
-                              64, 16, o.out_dir, stem + ".mismatch", unit.ports);
+                              64, 16, o.out_dir, stem + ".mismatch", unit.block->ports());
         c.waveform = fmt::format("{} (unit {}, cycles {}..{}; gtkwave {})", w.fst, unit.name(),
                                  w.begin, w.end, w.gtkw);
         rep.files.push_back(w.fst);

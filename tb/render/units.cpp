@@ -46,8 +46,7 @@ void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options) {
     throw std::runtime_error(unit.name() + " (" + engine_name(level) +
                              ") failed: " + unit.result.error);
   }
-  census(unit.kind).cycles += unit.result.cycles;
-  if (!unit.role.empty()) census(unit.role_key()).cycles += unit.result.cycles;
+  for (const std::string& key : unit.census_keys()) census(key).cycles += unit.result.cycles;
 }
 
 std::vector<tb::Txn> run_and_keep(UnitRun unit, Level level,

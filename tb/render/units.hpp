@@ -28,18 +28,22 @@ struct UnitRun {
   std::string kind;      // the block: trilinear, footprint, mipgen, deflect, ...
   std::string material;  // the material whose chain built it
   std::string role;      // what a map unit reads for it ("bump", "environment+X"), or empty
-  // The unit's engine at a level ("golden", "hls", "rtl"), and its ports (for a waveform).
+  // The unit's engine at a level ("golden", "hls", "rtl").
   std::function<std::unique_ptr<tb::Engine>(const std::string& level)> engine;
-  std::shared_ptr<const tb::Block> block;  // its schemas, for the unit-by-unit check
-  std::vector<tb::Port> ports;
+  // Its block: the schemas the unit-by-unit check reads, the ports a waveform shows.
+  std::shared_ptr<const tb::Block> block;
   std::vector<tb::Txn> items;  // its stimulus
   tb::RunResult result;        // its outputs, cycles and counters
 
   std::string name() const {
     return kind + "[" + material + (role.empty() ? "" : "." + role) + "]";
   }
-  // The census key of a unit with a role: "trilinear.bump".
-  std::string role_key() const { return role.empty() ? "" : kind + "." + role; }
+  // Where the census counts it: its kind, and kind.role for a unit with a role
+  // ("trilinear", "trilinear.bump").
+  std::vector<std::string> census_keys() const {
+    if (role.empty()) return {kind};
+    return {kind, kind + "." + role};
+  }
 };
 
 // A stage of the documents' pipelines that a render at golden, hls or rtl computes on the host
@@ -60,15 +64,13 @@ struct UnitCensus {
 UnitCensus& census(const std::string& key);
 void reset_census();
 
-// A unit's engines and ports from a block that owns its environment.
+// A unit's engines and block from a block that owns its environment.
 // Set run.kind (and run.role) first: each engine the factory constructs counts in their census.
 template <class Block>
 void attach(UnitRun& run, std::shared_ptr<Block> block) {
-  run.ports = block->ports();
   run.block = block;
-  run.engine = [block, kind = run.kind, role = run.role_key()](const std::string& level) {
-    ++census(kind).built;
-    if (!role.empty()) ++census(role).built;
+  run.engine = [block, keys = run.census_keys()](const std::string& level) {
+    for (const std::string& key : keys) ++census(key).built;
     return block->engine(level);
   };
 }

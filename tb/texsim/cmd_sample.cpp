@@ -107,6 +107,48 @@ std::string memory_difference(const texram::PageStats& a, const texram::PageStat
   return d;
 }
 
+// The hardware's results against the ideal model, unrounded: how far apart, per channel, in
+// 8-bit levels.
+void print_error_against_ideal(const texram::TexramTexture& tex,
+                               const texram::SamplerConfig& config,
+                               const std::vector<SampleRequest>& requests,
+                               const std::vector<uint32_t>& hardware) {
+  const texram::IdealTexture ideal_tex = texram::ideal_texture(tex.source);
+  double max_err = 0, sum = 0;
+  for (size_t i = 0; i < requests.size(); ++i) {
+    const SampleRequest& r = requests[i];
+    const auto ideal = texram::ideal_sample(ideal_tex, config, r.u, r.v, r.lambda, r.shade);
+    for (int ch = 0; ch < 4; ++ch) {
+      const double e = std::abs(texram::channel(hardware[i], ch) - ideal[static_cast<size_t>(ch)]);
+      max_err = std::max(max_err, e);
+      sum += e;
+    }
+  }
+  fmt::print("  error against ideal: max {:.3f}, mean {:.4f} (8-bit levels)\n", max_err,
+             sum / (4.0 * static_cast<double>(requests.size())));
+}
+
+// Two engines' results bit for bit, and their memory counters (golden's page model predicts
+// what the hls and rtl memories count): MATCH or MISMATCH, printed. Not for ideal, which
+// counts no memory.
+bool bit_exact(const Run& run, const Run& other, const std::string& engine,
+               const std::string& check) {
+  if (other.rgba != run.rgba) {
+    size_t differ = 0;
+    for (size_t i = 0; i < run.rgba.size(); ++i) differ += run.rgba[i] != other.rgba[i];
+    fmt::print("MISMATCH: {} of {} results differ between {} and {}\n", differ, run.rgba.size(),
+               engine, check);
+    return false;
+  }
+  if (const std::string d = memory_difference(*run.memory, *other.memory); !d.empty()) {
+    fmt::print("MISMATCH: the memory counters differ between {} and {}: {}\n", engine, check, d);
+    return false;
+  }
+  fmt::print("MATCH: {} = {}, all {} results bit-exact, and the memory counters\n", engine, check,
+             run.rgba.size());
+  return true;
+}
+
 void report(const Run& run, size_t n) {
   if (run.cycles) {
     const double per_clock = static_cast<double>(n) / static_cast<double>(run.cycles);
@@ -179,44 +221,14 @@ void add_sample_command(CLI::App& app, ExitCode& exit_code) {
         texram::name(config.border_u), texram::name(config.border_v), a->engine);
     const Run run = run_engine(a->engine, tex, config, requests);
     report(run, requests.size());
-    if (!a->check.empty()) {
-      const Run other = run_engine(a->check, tex, config, requests);
-      if (a->check == "ideal" || a->engine == "ideal") {
-        // Against the ideal model: how far apart, per channel, in 8-bit levels.
-        const texram::IdealTexture ideal_tex = texram::ideal_texture(tex.source);
-        double max_err = 0, sum = 0;
-        for (size_t i = 0; i < requests.size(); ++i) {
-          const auto ideal = texram::ideal_sample(ideal_tex, config, requests[i].u, requests[i].v,
-                                                  requests[i].lambda, requests[i].shade);
-          const uint32_t got = a->engine == "ideal" ? other.rgba[i] : run.rgba[i];
-          for (int ch = 0; ch < 4; ++ch) {
-            const double e = std::abs(texram::channel(got, ch) - ideal[static_cast<size_t>(ch)]);
-            max_err = std::max(max_err, e);
-            sum += e;
-          }
-        }
-        fmt::print("  error against ideal: max {:.3f}, mean {:.4f} (8-bit levels)\n", max_err,
-                   sum / (4.0 * static_cast<double>(requests.size())));
-      } else if (other.rgba != run.rgba) {
-        size_t differ = 0;
-        for (size_t i = 0; i < run.rgba.size(); ++i) differ += run.rgba[i] != other.rgba[i];
-        fmt::print("MISMATCH: {} of {} results differ between {} and {}\n", differ, run.rgba.size(),
-                   a->engine, a->check);
-        exit_code.value = 1;
-        return;
-      } else if (const std::string d = run.memory && other.memory
-                                           ? memory_difference(*run.memory, *other.memory)
-                                           : "";
-                 !d.empty()) {
-        // golden's page model predicts the counters the hls and rtl memories count.
-        fmt::print("MISMATCH: the memory counters differ between {} and {}: {}\n", a->engine,
-                   a->check, d);
-        exit_code.value = 1;
-        return;
-      } else {
-        fmt::print("MATCH: {} = {}, all {} results bit-exact, and the memory counters\n", a->engine,
-                   a->check, run.rgba.size());
-      }
+    if (a->check == "ideal" || (a->engine == "ideal" && !a->check.empty())) {
+      print_error_against_ideal(
+          tex, config, requests,
+          a->engine == "ideal" ? run_engine(a->check, tex, config, requests).rgba : run.rgba);
+    } else if (!a->check.empty() &&
+               !bit_exact(run, run_engine(a->check, tex, config, requests), a->engine, a->check)) {
+      exit_code.value = 1;
+      return;
     }
     write_results(a->out, run.rgba);
     fmt::print("wrote {}\n", a->out);
