@@ -65,24 +65,27 @@ std::string marks_legend() {
          "`= golden` says yes.\n";
 }
 
+namespace {
+
+// "cells [synth]": the text with its mark, unless it has none or the one it inherits.
+std::string shown(const Marked& m, Mark inherited) {
+  return m.mark == Mark::kNone || m.mark == inherited
+             ? m.text
+             : fmt::format("{} [{}]", m.text, mark_name(m.mark));
+}
+
+}  // namespace
+
 std::vector<std::string> SweepTable::header_text() const {
   std::vector<std::string> out;
-  for (const Column& c : columns_) {
-    out.push_back(c.mark == Mark::kNone ? c.name
-                                        : fmt::format("{} [{}]", c.name, mark_name(c.mark)));
-  }
+  for (const Column& c : columns_) out.push_back(shown(c, Mark::kNone));
   return out;
 }
 
 std::vector<std::string> SweepTable::row_text(const std::vector<Cell>& row) const {
   std::vector<std::string> out;
-  for (size_t i = 0; i < row.size(); ++i) {
-    const Mark column = i < columns_.size() ? columns_[i].mark : Mark::kNone;
-    const Cell& c = row[i];
-    out.push_back(c.mark == Mark::kNone || c.mark == column
-                      ? c.text
-                      : fmt::format("{} [{}]", c.text, mark_name(c.mark)));
-  }
+  for (size_t i = 0; i < row.size(); ++i)
+    out.push_back(shown(row[i], i < columns_.size() ? columns_[i].mark : Mark::kNone));
   return out;
 }
 
@@ -120,7 +123,7 @@ void SweepTable::print(const std::string& markdown_path) const {
     csv += "\n";
   };
   std::vector<std::string> names;
-  for (const Column& c : columns_) names.push_back(c.name);
+  for (const Column& c : columns_) names.push_back(c.text);
   csv_line(names);
   for (const auto& r : rows_) {
     std::vector<std::string> figures;

@@ -40,19 +40,15 @@ std::string mark_name(Mark mark);
 // What each mark means, as a Markdown list (the head of docs/accuracy.md).
 std::string marks_legend();
 
-struct Column {
-  Column(std::string name_, Mark mark_ = Mark::kNone) : name(std::move(name_)), mark(mark_) {}
-  Column(const char* name_, Mark mark_ = Mark::kNone) : name(name_), mark(mark_) {}
-  std::string name;
+// A column's name or a cell's text, with its mark (a cell's kNone: its column's).
+struct Marked {
+  Marked(std::string text_, Mark mark_ = Mark::kNone) : text(std::move(text_)), mark(mark_) {}
+  Marked(const char* text_, Mark mark_ = Mark::kNone) : text(text_), mark(mark_) {}
+  std::string text;
   Mark mark;
 };
-
-struct Cell {
-  Cell(std::string text_, Mark mark_ = Mark::kNone) : text(std::move(text_)), mark(mark_) {}
-  Cell(const char* text_, Mark mark_ = Mark::kNone) : text(text_), mark(mark_) {}
-  std::string text;
-  Mark mark;  // kNone: its column's
-};
+using Column = Marked;
+using Cell = Marked;
 
 class SweepTable {
  public:
