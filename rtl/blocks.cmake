@@ -239,6 +239,9 @@ tmu_mutant(trilinear round FILE texram/tmu_trilinear_blend.sv
 tmu_mutant(trilinear reads FILE texram/tmu_trilinear.sv
   FROM "(t % 4 == 0 || !nearest)" TO "(t % 4 == 0 || 1'b1)"
   WHY "nearest reads the banks of all four taps (right colours, wrong memory requests)")
+tmu_mutant(trilinear sphere FILE texram/tmu_trilinear_sphere.sv
+  FROM "wide >>> (ShiftLog2 - log2_i)" TO "wide >> (ShiftLog2 - log2_i)"
+  WHY "sphere addressing below 128 texels shifts logically: a coordinate left of the map (uN < -1) becomes a huge positive one")
 tmu_mutant(trilinear unreset FILE texram/tmu_trilinear.sv EXPECT x-leak
   FROM "      s1_valid_q    <= 1'b0;\n      s2_valid_q    <= 1'b0;\n      s3_valid_q    <= 1'b0;\n      s4_valid_q    <= 1'b0;\n      s5_valid_q    <= 1'b0;\n"
   TO ""
@@ -402,6 +405,9 @@ tmu_block(deflect)
 tmu_mutant(deflect tag FILE deflect/tmu_deflect.sv
   FROM "mbr_tag_q == s1_block_q" TO "mbr_tag_q[BlockW-1:1] == s1_block_q[BlockW-1:1]"
   WHY "the MBR's tag compare ignores the block address's lowest bit (neighbouring blocks alias: hits for misses, wrong entries, missing requests)")
+tmu_mutant(deflect unpack FILE deflect/tmu_bump_unpack.sv
+  FROM "g[7:MagBits] != '0 ? '1 : g[MagBits-1:0]" TO "g[MagBits-1:0]"
+  WHY "a bump texel's |theta| wraps instead of saturating at Q - 1 (G >= Q reads G mod Q)")
 tmu_mutant(deflect quadrant FILE deflect/tmu_deflect_address.sv
   FROM "quadrant[1] ^ quadrant[0]" TO "quadrant[1]"
   WHY "z's sign is phi''s top bit alone (quadrants 1 and 3 swap their z signs)")

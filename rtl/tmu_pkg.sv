@@ -110,6 +110,11 @@ package tmu_pkg;
   localparam int unsigned TexCombineFrac = 0;
   typedef logic [TexCombineW-1:0] tex_combine_t;
 
+  // TexAddressing: UQ1.0, TEXRAM request coordinates: 0 texels (TexCoord), 1 a sphere map's uN, vN (UnitComp)
+  localparam int unsigned TexAddressingW = 1;
+  localparam int unsigned TexAddressingFrac = 0;
+  typedef logic [TexAddressingW-1:0] tex_addressing_t;
+
   // PixelCoord: UQ12.0, pixel x or y of a fragment, 0..4095
   localparam int unsigned PixelCoordW = 12;
   localparam int unsigned PixelCoordFrac = 0;

@@ -6,11 +6,12 @@
 // Sphere maps (shading maps, spherical environment), side S = 2^s, 128 <= S <= 1024: texel
 // (i, j) holds the normal N = (x, y, sqrt(1 - x^2 - y^2)) with x = 2 (i + 0.5) / S - 1,
 // y = 1 - 2 (j + 0.5) / S (outside the disc, the rim's normal), i.e. they are read at the
-// normal's (uN, vN) like the mirror ball of 001 §2 eq. 4-5. The diffuse map holds the sum of
-// the lights' diffuse terms at N; the specular map the specular term at R = 2 (N . E) N - E,
-// E = (0, 0, 1); the spherical environment the environment in direction R. A map over
-// (uR, vR) alone could not tell R from its mirror image through the view plane (wR < 0 and
-// wR > 0 read the same texel); the cube map takes all of R.
+// normal's (uN, vN) like the mirror ball of 001 §2 eq. 4-5: the trilinear unit's sphere
+// addressing (texram::texel_request) reads a map there, u = (uN + 1) / 2 S, v = (1 - vN) / 2 S. The
+// diffuse map holds the sum of the lights' diffuse terms at N; the specular map the specular term
+// at R = 2 (N . E) N - E, E = (0, 0, 1); the spherical environment the environment in direction R.
+// A map over (uR, vR) alone could not tell R from its mirror image through the view plane (wR < 0
+// and wR > 0 read the same texel); the cube map takes all of R.
 //
 // Cube faces, side 2^L: OpenGL's convention (cube_map.hpp): texel (i, j) of face f looks in
 // the direction whose face coordinates are sc = 2 (i + 0.5) / 2^L - 1, tc = 2 (j + 0.5) / 2^L - 1.
@@ -54,16 +55,5 @@ glm::dvec3 cube_face_direction(uint32_t face, double sc, double tc);
 // the zenith, a checkered ground (sharp edges show direction errors) and a sun; `direction`
 // in world space (y up).
 Rgb8 sky_room(const glm::dvec3& direction);
-
-// A map coordinate (uN, vN: SQ2.14 in -1..1) to the texel coordinate (TexCoord SQ16.8) of a
-// sphere map of side 2^log2_side, log2_side >= 7 (an exact shift): u = (uN + 1) / 2 S,
-// v = (1 - vN) / 2 S. This is wiring and one adder between the coordinate generator and the
-// texture address unit.
-constexpr int32_t sphere_map_u(int32_t un, int log2_side) {
-  return (un + (1 << 14)) * (1 << (log2_side - 7));
-}
-constexpr int32_t sphere_map_v(int32_t vn, int log2_side) {
-  return ((1 << 14) - vn) * (1 << (log2_side - 7));
-}
 
 }  // namespace tmu::deflect

@@ -47,6 +47,7 @@ std::string_view name(TexelKind k) { return name_of(kKinds, k); }
 std::string_view name(Filter f) { return name_of(kFilters, f); }
 std::string_view name(Border b) { return name_of(kBorders, b); }
 std::string_view name(Combine c) { return name_of(kCombines, c); }
+std::string_view name(Addressing a) { return a == Addressing::kSphere ? "sphere" : "texel"; }
 std::optional<TexelKind> parse_texel_kind(std::string_view s) { return parse(kKinds, s); }
 std::optional<Filter> parse_filter(std::string_view s) { return parse(kFilters, s); }
 std::optional<Border> parse_border(std::string_view s) { return parse(kBorders, s); }

@@ -39,6 +39,14 @@ enum class Combine : uint8_t {
   kShade,     // I_d, the shaded intensity the rasterizer sends with the request
 };
 
+// How the address unit reads a request's (u, v) (trilinear.hpp: texel_request). Only the
+// trilinear unit has the choice (its configuration field `addressing`); the footprint unit's
+// probes are texels.
+enum class Addressing : uint8_t {
+  kTexel,   // TexCoord: texels of level 0
+  kSphere,  // a sphere map's (uN, vN) from the coordinate generator (001 §5), UnitComp
+};
+
 // The unit's internal precision, each 1..8 bits (the request ports carry 8 fraction bits).
 struct Widths {
   int sub_texel = 8;  // fraction bits of a coordinate within a level
@@ -56,6 +64,7 @@ struct SamplerConfig {
   uint32_t border_rgba = 0;  // RGBA8888
   Combine combine = Combine::kOne;
   uint32_t constant_rgba = 0;  // k_T, RGBA8888
+  Addressing addressing = Addressing::kTexel;
   Widths widths;
 };
 
@@ -72,6 +81,7 @@ std::string_view name(TexelKind k);
 std::string_view name(Filter f);
 std::string_view name(Border b);
 std::string_view name(Combine c);
+std::string_view name(Addressing a);
 std::optional<TexelKind> parse_texel_kind(std::string_view s);
 std::optional<Filter> parse_filter(std::string_view s);
 std::optional<Border> parse_border(std::string_view s);

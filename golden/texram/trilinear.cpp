@@ -84,9 +84,29 @@ Axis axis_taps(int32_t coord, int level, bool nearest, const Widths& widths) {
   return {t0, to_width(static_cast<uint32_t>(sc - (t0 << s)), s, widths.weight)};
 }
 
+// One axis of a sphere map: (c + 1) / 2 or, flipped, (1 - c) / 2 of 2^log2 texels.
+int32_t sphere_axis(int32_t port, bool flip, int log2) {
+  const auto c = static_cast<int32_t>(fx::fit(port, formats::kUnitComp, fx::Overflow::kWrap));
+  const int64_t one = int64_t{1} << formats::kUnitComp.frac_bits;
+  const int64_t half_turns = flip ? one - c : one + c;  // 2 (texel coordinate / side), SQ.14
+  // texels = half_turns / 2^15 * 2^log2, in TexCoord's 8 fraction bits
+  constexpr int kShift = formats::kUnitComp.frac_bits + 1 - kPortFrac;  // 7
+  return static_cast<int32_t>(log2 >= kShift ? half_turns << (log2 - kShift)
+                                             : floor_shift(half_turns, kShift - log2));
+}
+
 }  // namespace
 
-SamplePlan plan_sample(const Geometry& g, const SamplerConfig& config, const Request& request) {
+Request texel_request(const Geometry& g, Addressing addressing, const Request& request) {
+  if (addressing == Addressing::kTexel) return request;
+  Request r = request;
+  r.u = sphere_axis(request.u, false, g.log2_width());
+  r.v = sphere_axis(request.v, true, g.log2_height());
+  return r;
+}
+
+SamplePlan plan_sample(const Geometry& g, const SamplerConfig& config, const Request& port) {
+  const Request request = texel_request(g, config.addressing, port);
   const Widths& widths = config.widths;
   check_widths(widths);
   SamplePlan plan;

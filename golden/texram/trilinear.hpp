@@ -4,6 +4,7 @@
 // the colour combine of eq. 5. This file is the specification the hls and rtl models match.
 //
 // Arithmetic, with Widths {S sub-texel, W weight, L lod-fraction} bits (each 1..8):
+// - Addressing (texel_request): texel coordinates pass; a sphere map's (uN, vN) become texels.
 // - lambda (SQ6.8) keeps its top L fraction bits (floor). top = levels - 1.
 //   trilinear: lambda <= 0 -> level 0 with weight 0 for the next level (magnification);
 //              lambda >= top -> level top, weight 0; else levels floor(lambda) and the next,
@@ -54,8 +55,18 @@ struct SamplePlan {
   int planes = 1;  // accesses per sample (plane p reads address + p)
 };
 
-// Address generation: levels, weights, taps and the bank access. Throws std::logic_error if
-// two taps would need different cells of one bank (the layout guarantees they never do).
+// The address unit's first step: a request's (u, v) as TexCoord texels of level 0.
+// kTexel passes them. kSphere reads each coordinate port's low 16 bits as UnitComp SQ2.14 (the
+// bits above are ignored: a wrap, named) and maps the square [-1, 1]^2 of (uN, vN) onto level 0
+// of the 2^a x 2^b texture, v pointing down the rows: u = (uN + 1) / 2 2^a, v = (1 - vN) / 2
+// 2^b; in raw units (uN + 2^14) << (a - 7) and (2^14 - vN) << (b - 7), exact for sides of 128
+// and more, floored (>> (7 - a)) below. At most 19 bits and a sign: no overflow. This is the
+// host's sphere-map rule of view_maps.hpp (texel (i, j) stands for uN = 2 (i + 0.5) / S - 1).
+Request texel_request(const Geometry& geometry, Addressing addressing, const Request& request);
+
+// Address generation (after texel_request): levels, weights, taps and the bank access. Throws
+// std::logic_error if two taps would need different cells of one bank (the layout guarantees they
+// never do).
 SamplePlan plan_sample(const Geometry& geometry, const SamplerConfig& config,
                        const Request& request);
 

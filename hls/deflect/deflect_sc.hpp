@@ -1,7 +1,8 @@
 // SystemC model of the bump deflection unit with its MBR (001 §4.4, Fig. 5; §6.2), the same
 // ports and handshakes as rtl/deflect/tmu_deflect.sv at the default grid (A = 9). The
 // arithmetic and the MBR's hit/miss decisions are the golden model's (golden/deflect/
-// s2s_map.hpp: deflect_address and MapBuffer, the steps DeflectionUnit::deflect runs); the
+// bump_map.hpp's unpack_bump, s2s_map.hpp's deflect_address and MapBuffer: the steps
+// DeflectionUnit::deflect runs); the
 // module adds the clocking, and fills its MapBuffer from the map memory port, so the entries
 // it reads are the ones the memory sent.
 //
@@ -18,6 +19,7 @@
 #include <systemc>
 
 #include "blocks/deflect/deflect_ports.hpp"
+#include "deflect/bump_map.hpp"
 #include "deflect/s2s_map.hpp"
 #include "deflect/sphere_grid.hpp"
 #include "formats/formats.hpp"
@@ -75,8 +77,8 @@ SC_MODULE(DeflectSc) {
       if (in_ready_o.read() && in_valid_i.read()) {
         in_.push({{static_cast<uint32_t>(in_normal_phi_i.read()),
                    static_cast<uint32_t>(in_normal_theta_i.read())},
-                  {static_cast<uint32_t>(in_bump_phi_i.read()),
-                   static_cast<uint32_t>(in_bump_theta_i.read())}});
+                  deflect::unpack_bump(grid_,
+                                       unpack_rgb(static_cast<uint32_t>(in_bump_texel_i.read())))});
       }
       if (map_resp_valid_i.read()) fill();
       if (!in_.empty() && !fetching_ && !out_.full()) look_up();

@@ -66,6 +66,7 @@ class FootprintSc : public sc_core::sc_module {
     tri_.cfg_border_rgba_i(cfg_border_rgba_i);
     tri_.cfg_combine_i(cfg_combine_i);
     tri_.cfg_constant_rgba_i(cfg_constant_rgba_i);
+    tri_.cfg_addressing_i(tri_addressing_);  // texel: the probes are texels
     tri_.clut_valid_i(tri_clut_valid_);
     tri_.clut_ready_o(tri_clut_ready_);
     tri_.clut_addr_i(tri_clut_addr_);
@@ -247,6 +248,7 @@ class FootprintSc : public sc_core::sc_module {
   sc_core::sc_signal<bool> tri_clut_valid_{"tri_clut_valid"}, tri_clut_ready_{"tri_clut_ready"};
   sig<fmts::kClutIndex.width()> tri_clut_addr_{"tri_clut_addr"};
   sig<fmts::kRgba8888.width()> tri_clut_rgba_{"tri_clut_rgba"};
+  sig<fmts::kTexAddressing.width()> tri_addressing_{"tri_addressing"};  // 0: texel
   sc_core::sc_signal<bool> tri_req_valid_{"tri_req_valid"}, tri_req_ready_{"tri_req_ready"};
   sig<fmts::kTexCoord.width()> tri_req_u_{"tri_req_u"}, tri_req_v_{"tri_req_v"};
   sig<fmts::kLod.width()> tri_req_lambda_{"tri_req_lambda"};

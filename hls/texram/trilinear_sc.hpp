@@ -1,12 +1,12 @@
 // SystemC model of the TEXRAM trilinear unit (000 §2, §5, §6), the same ports (TMU_SC_PORTS:
 // tb/blocks/trilinear/trilinear.json) and handshakes as rtl/texram/tmu_trilinear.sv. Its
-// datapath is the golden model's (golden/texram/ trilinear.hpp: plan_sample for the levels,
-// weights, border operators, taps and bank access; tap_colour, blend_taps and combine for the
-// colour); the module adds the clocking: one clocked thread that, while idle, takes a CLUT write or
-// a request; for a request it makes the sample's accesses one after the other (one per byte plane,
-// plane p at address + p, each request held until the memory takes it, then its response awaited),
-// and loads the result into a one-entry output register. A sample with nothing to read makes no
-// access.
+// datapath is the golden model's (golden/texram/ trilinear.hpp: plan_sample for the addressing,
+// levels, weights, border operators, taps and bank access; tap_colour, blend_taps and combine for
+// the colour); the module adds the clocking: one clocked thread that, while idle, takes a CLUT
+// write or a request; for a request it makes the sample's accesses one after the other (one per
+// byte plane, plane p at address + p, each request held until the memory takes it, then its
+// response awaited), and loads the result into a one-entry output register. A sample with nothing
+// to read makes no access.
 //
 // It is sequential (several cycles per sample, one access in flight); only the transactions
 // and the memory accesses match the RTL, not its timing.
@@ -92,6 +92,7 @@ class TrilinearSc : public sc_core::sc_module {
     c.border_rgba = static_cast<uint32_t>(cfg_border_rgba_i.read());
     c.combine = static_cast<texram::Combine>(cfg_combine_i.read().to_uint());
     c.constant_rgba = static_cast<uint32_t>(cfg_constant_rgba_i.read());
+    c.addressing = static_cast<texram::Addressing>(cfg_addressing_i.read().to_uint());
     c.widths = widths_;
     return c;
   }

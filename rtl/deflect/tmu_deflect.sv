@@ -5,7 +5,8 @@
 /// yaw + phi_N. Each result carries its access: hit, miss or bypass.
 ///
 /// Pipeline (one request per clock while it hits or bypasses):
-///   in    tmu_deflect_address: phi', the octant reduction, the block and the entry in it
+///   in    tmu_bump_unpack: the texel's angles D; tmu_deflect_address: phi', the octant
+///         reduction, the block and the entry in it
 ///   S1    the look-up: the block's tag against the MBR (memory buffer register: one block
 ///         of 4 x 4 entries and its tag, empty after reset). A hit reads the entry from the
 ///         MBR. k = Q (the z = 0 column) needs no entry: (l_phi, l_theta) = (Q, min(Q -
@@ -30,11 +31,12 @@
 /// sphere_theta_t (theta: sign bit A-2, magnitude below), s2s_block_addr_t and 16 x
 /// s2s_entry_t.
 ///
-/// Example (A = 9, empty MBR, L = 4): N = (5, +30), D = (10, -5): phi' = 492 (quadrant 3),
-/// k = 20, k_theta = 5, sx = 1, sy = sz = 0, block 37 (a miss): the request leaves the cycle
-/// after the input is accepted, the block arrives 4 cycles later and ENTRY[5][20] = (l_phi 5,
-/// l_theta 20) gives phi = 4Q - 5 + 5 = 0 (modulo 4Q), theta = +20: the output (0, +20,
-/// miss) is valid the cycle after. The same D again is a hit and follows back to back.
+/// Example (A = 9, empty MBR, L = 4): N = (5, +30), the texel 0x0A_05_80, D = (10, -5):
+/// phi' = 492 (quadrant 3), k = 20, k_theta = 5, sx = 1, sy = sz = 0, block 37 (a miss): the
+/// request leaves the cycle after the input is accepted, the block arrives 4 cycles later and
+/// ENTRY[5][20] = (l_phi 5, l_theta 20) gives phi = 4Q - 5 + 5 = 0 (modulo 4Q), theta = +20:
+/// the output (0, +20, miss) is valid the cycle after. The same texel again is a hit and
+/// follows back to back.
 module tmu_deflect #(
   /// A: bits of phi (the grid has 2^A x 2^(A-1) patches), 6..12.
   parameter int unsigned PhiBits = 9
@@ -42,13 +44,13 @@ module tmu_deflect #(
   input  logic                         clk_i,
   input  logic                         rst_ni,
 
-  /// Request: the surface normal N and the bump texel D, angles on the grid.
+  /// Request: the surface normal N (angles on the grid) and the bump map's texel, which
+  /// holds D (tmu_bump_unpack).
   input  logic                         in_valid_i,
   output logic                         in_ready_o,
   input  logic [PhiBits-1:0]           in_normal_phi_i,
   input  logic [PhiBits-2:0]           in_normal_theta_i,
-  input  logic [PhiBits-1:0]           in_bump_phi_i,
-  input  logic [PhiBits-2:0]           in_bump_theta_i,
+  input  tmu_pkg::rgb888_t             in_bump_texel_i,
 
   /// Result: the deflected normal and how the map was read (0 hit, 1 miss, 2 bypass).
   output logic                         out_valid_o,
@@ -84,14 +86,23 @@ module tmu_deflect #(
 
   // ---- Address (combinational, in front of S1) ---------------------------------------------
 
+  logic [A-1:0]       in_bump_phi;
+  logic [A-2:0]       in_bump_theta;
+
+  tmu_bump_unpack #(.PhiBits(A)) u_unpack (
+    .texel_i(in_bump_texel_i),
+    .phi_o  (in_bump_phi),
+    .theta_o(in_bump_theta)
+  );
+
   logic               in_sx, in_sy, in_sz, in_bypass;
   logic [MagBits-1:0] in_k_theta;
   logic [BlockW-1:0]  in_block;
   logic [3:0]         in_offset;
 
   tmu_deflect_address #(.PhiBits(A)) u_address (
-    .bump_phi_i    (in_bump_phi_i),
-    .bump_theta_i  (in_bump_theta_i),
+    .bump_phi_i    (in_bump_phi),
+    .bump_theta_i  (in_bump_theta),
     .normal_theta_i(in_normal_theta_i),
     .sx_o          (in_sx),
     .sy_o          (in_sy),

@@ -208,6 +208,7 @@ module tmu_footprint #(
     .cfg_border_rgba_i    (cfg_border_rgba_i),
     .cfg_combine_i        (cfg_combine_i),
     .cfg_constant_rgba_i  (cfg_constant_rgba_i),
+    .cfg_addressing_i     (1'b0),  // the probes are texels
     .clut_valid_i         (clut_valid_i && idle),
     .clut_ready_o         (tri_clut_ready),
     .clut_addr_i          (clut_addr_i),

@@ -17,7 +17,8 @@
 ///
 /// Pipeline (each stage a register with valid; a stage loads when it is empty or passes its
 /// sample on):
-///   S1 request  lambda -> levels and level weight (tmu_trilinear_lod), taken with the request
+///   S1 request  lambda -> levels and level weight (tmu_trilinear_lod), taken with the request;
+///               the coordinates as texels (tmu_trilinear_sphere for a sphere map's uN, vN)
 ///   S2 axes     per level and axis: first tap and weight (tmu_trilinear_axis)
 ///   S3 taps     per level, axis and tap: border operator, stored coordinate
 ///               (tmu_trilinear_border)
@@ -80,6 +81,8 @@ module tmu_trilinear #(
   /// eq. 5: the selection and the constant k_T.
   input  tmu_pkg::tex_combine_t      cfg_combine_i,
   input  tmu_pkg::rgba8888_t         cfg_constant_rgba_i,
+  /// The request's (u, v): texels (0) or a sphere map's (uN, vN) (1, tmu_trilinear_sphere).
+  input  tmu_pkg::tex_addressing_t   cfg_addressing_i,
 
   /// CLUT write: entry clut_addr_i <= clut_rgba_i (ready only while no sample is in flight).
   input  logic                       clut_valid_i,
@@ -133,6 +136,8 @@ module tmu_trilinear #(
     BorderColour = 2'd2,
     BorderMirror = 2'd3
   } border_e;
+
+  localparam tmu_pkg::tex_addressing_t AddressingSphere = 1'b1;
 
   typedef enum logic [1:0] {
     CombineOne      = 2'd0,
@@ -220,6 +225,18 @@ module tmu_trilinear #(
 
   assign req_ready_o = s1_ready;
   assign req_fire    = req_valid_i && req_ready_o;
+
+  // The request's coordinates as texels of level 0 (sphere addressing: a sphere map's uN, vN).
+  tmu_pkg::tex_coord_t sphere_u, sphere_v, req_u, req_v;
+
+  tmu_trilinear_sphere u_sphere_u (
+    .coord_i(req_u_i), .flip_i(1'b0), .log2_i(cfg_log2_w_i), .coord_o(sphere_u)
+  );
+  tmu_trilinear_sphere u_sphere_v (
+    .coord_i(req_v_i), .flip_i(1'b1), .log2_i(cfg_log2_h_i), .coord_o(sphere_v)
+  );
+  assign req_u = cfg_addressing_i == AddressingSphere ? sphere_u : req_u_i;
+  assign req_v = cfg_addressing_i == AddressingSphere ? sphere_v : req_v_i;
 
   // ---- S2: the taps of each axis at each level -----------------------------------------------
 
@@ -535,8 +552,8 @@ module tmu_trilinear #(
   // Data registers are read only while their stage (or entry) is valid: no reset.
   always_ff @(posedge clk_i) begin
     if (req_fire) begin
-      s1_u_q        <= req_u_i;
-      s1_v_q        <= req_v_i;
+      s1_u_q        <= req_u;
+      s1_v_q        <= req_v;
       s1_shade_q    <= req_shade_i;
       s1_level0_q   <= lod_level0;
       s1_level1_q   <= lod_level1;

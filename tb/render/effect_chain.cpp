@@ -39,11 +39,6 @@ uint32_t reflectance_register(const dvec3& k) {
   return texram::rgba(ch(k.r), ch(k.g), ch(k.b), 255);
 }
 
-Rgb8 rgb_of(uint32_t rgba) {
-  return {static_cast<uint8_t>(rgba >> 24), static_cast<uint8_t>(rgba >> 16),
-          static_cast<uint8_t>(rgba >> 8)};
-}
-
 // Runs units one after the other and keeps each with the fragments of its outputs.
 struct Runner {
   const ChainInput& in;
@@ -55,16 +50,20 @@ struct Runner {
                         outputs_of);
   }
 
-  // A map read by a trilinear unit at (u, v, lambda) per item; returns RGBA8888 per item.
+  // A map read by a trilinear unit at (u, v, lambda) per item, as the addressing reads (u, v);
+  // returns RGBA8888 per item.
   std::vector<uint32_t> sample(const std::string& what, const MapTexture& map,
                                const std::vector<std::array<int32_t, 3>>& uvl,
-                               std::vector<size_t> fragments_of_outputs) {
+                               std::vector<size_t> fragments_of_outputs,
+                               texram::Addressing addressing = texram::Addressing::kTexel) {
     UnitRun unit;
     unit.kind = "trilinear";
     unit.material = in.material.name;
     unit.role = what;
+    texram::SamplerConfig config = map.sampler;
+    config.addressing = addressing;
     const auto block = std::make_shared<tb::TrilinearBlock>(
-        tb::BlockOptions{}, tb::TrilinearEnv{map.texture, map.sampler, what});
+        tb::BlockOptions{}, tb::TrilinearEnv{map.texture, config, what});
     attach(unit, block);
     unit.items = block->setup_items();  // the map's configuration (and CLUT)
     for (const auto& [u, v, lambda] : uvl)
@@ -74,17 +73,16 @@ struct Runner {
       rgba.push_back(static_cast<uint32_t>(t.f[0]));
     return rgba;
   }
-};
 
-// Texel coordinates of a sphere map at (uN, vN).
-std::vector<std::array<int32_t, 3>> sphere_map_coords(const std::vector<deflect::MapCoords>& c,
-                                                      int log2_side) {
-  std::vector<std::array<int32_t, 3>> uvl;
-  for (const deflect::MapCoords& m : c)
-    uvl.push_back(
-        {deflect::sphere_map_u(m.un, log2_side), deflect::sphere_map_v(m.vn, log2_side), 0});
-  return uvl;
-}
+  // A sphere map read at each fragment's (uN, vN): the unit's sphere addressing makes them
+  // texels.
+  std::vector<uint32_t> sample_sphere(const std::string& what, const MapTexture& map,
+                                      const std::vector<deflect::MapCoords>& coords) {
+    std::vector<std::array<int32_t, 3>> uvl;
+    for (const deflect::MapCoords& m : coords) uvl.push_back({m.un, m.vn, 0});
+    return sample(what, map, uvl, in.frags, texram::Addressing::kSphere);
+  }
+};
 
 // A bump texel's angles by the format's definition (deflect/bump_map.hpp), in the ideal's own
 // arithmetic: phi = R + 256 (B & 0x7F) nodes modulo 4Q, |theta| = min(G, Q - 1) nodes, negative
@@ -133,10 +131,9 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
     deflect.kind = "deflect";
     deflect.material = mat.name;
     attach(deflect, std::make_shared<tb::DeflectBlock>(tb::BlockOptions{}));
-    for (size_t k = 0; k < n; ++k) {
-      deflect.items.push_back(
-          tb::deflect_item(normal[k], deflect::unpack_bump(kChainGrid, rgb_of(texels[k]))));
-    }
+    // The map's RGBA8888 texel on the unit's Rgb888 port: wiring, alpha unused.
+    for (size_t k = 0; k < n; ++k)
+      deflect.items.push_back(tb::deflect_texel_item(normal[k], texels[k] >> 8));
     const std::vector<tb::Txn> out = runner.run(std::move(deflect), frags);
     // The report's MBR hits, misses and bypasses, from the results' access codes.
     for (auto& c : tb::map_access_counters(out)) units.back().result.counters.push_back(c);
@@ -159,8 +156,7 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
   // I_d: the diffuse shading map, or the vertex shade.
   std::vector<uint32_t> shade;
   if (maps.diffuse) {
-    shade = runner.sample("diffuse", maps.diffuse,
-                          sphere_map_coords(map_coords, maps.diffuse.log2_side), frags);
+    shade = runner.sample_sphere("diffuse", maps.diffuse, map_coords);
   } else {
     for (size_t k = 0; k < n; ++k) shade.push_back(record(k).shade);
   }
@@ -175,9 +171,8 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
   // E or I_s.
   std::vector<uint32_t> specular;
   if (maps.specular || maps.sphere) {
-    const MapTexture& map = maps.specular ? maps.specular : maps.sphere;
-    specular = runner.sample(maps.specular ? "specular" : "environment", map,
-                             sphere_map_coords(map_coords, map.log2_side), frags);
+    specular = runner.sample_sphere(maps.specular ? "specular" : "environment",
+                                    maps.specular ? maps.specular : maps.sphere, map_coords);
   } else {
     const int face_log2 = maps.cube[0].log2_side;
     UnitRun cube;
@@ -233,14 +228,6 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
 
 std::vector<HostWork> effect_chain_host_work(const host::Material& mat, const EffectMaps& maps) {
   std::vector<HostWork> w;
-  if (maps.bump) {
-    w.push_back({"bump texel unpacking (deflect::unpack_bump: bit fields to the grid angles)",
-                 "tmu_deflect takes the bump angles, not the map's texel"});
-  }
-  if (maps.diffuse || maps.specular || maps.sphere) {
-    w.push_back({"sphere-map texel coordinates (deflect::sphere_map_u/v: an adder and a shift)",
-                 "they sit between tmu_coord_gen and the map's trilinear unit, in neither top"});
-  }
   if (maps.cube[0]) {
     w.push_back({"cube-face dispatch: each sample to its face's trilinear unit",
                  "tmu_cube_address selects the face; the six faces are six maps in six units "

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "deflect/bump_map.hpp"
 #include "formats/formats.hpp"
 #include "harness/described_engines.hpp"
 #include "harness/described_hls.hpp"
@@ -82,7 +83,11 @@ int64_t phi_prime_of(int quadrant, int32_t k) {
 // ---- Items -------------------------------------------------------------------------------
 
 Txn deflect_item(SphereAngle normal, SphereAngle bump) {
-  return channel_item(D::table(), "in", {normal.phi, normal.theta, bump.phi, bump.theta});
+  return deflect_texel_item(normal, pack_rgb(deflect::pack_bump(kGrid, bump)));
+}
+
+Txn deflect_texel_item(SphereAngle normal, uint32_t bump_texel) {
+  return channel_item(D::table(), "in", {normal.phi, normal.theta, bump_texel});
 }
 
 Txn deflect_steps_item(uint32_t normal_phi, int32_t normal_theta, uint32_t bump_phi,
@@ -99,8 +104,7 @@ SphereAngle deflect_normal(const Txn& item) {
 }
 
 SphereAngle deflect_bump(const Txn& item) {
-  return {static_cast<uint32_t>(item.f[D::in_bump_phi]),
-          static_cast<uint32_t>(item.f[D::in_bump_theta])};
+  return deflect::unpack_bump(kGrid, unpack_rgb(static_cast<uint32_t>(item.f[D::in_bump_texel])));
 }
 
 SphereAngle deflect_output(const Txn& output) {
@@ -181,6 +185,7 @@ std::vector<Txn> DeflectBlock::directed_items() const {
     items.push_back(prime_item(np, nt, phi_prime, bt));
   };
   auto raw = [&items](SphereAngle n, SphereAngle b) { items.push_back(deflect_item(n, b)); };
+  auto texel = [&items](SphereAngle n, uint32_t t) { items.push_back(deflect_texel_item(n, t)); };
 
   // The flat bump (0, +0) on normals all over the sphere, the poles included: the result is
   // the normal itself (the first is also the first look-up after reset: a miss).
@@ -224,11 +229,19 @@ std::vector<Txn> DeflectBlock::directed_items() const {
   for (int64_t pp : {int64_t{0}, 2 * int64_t{kQ}}) {
     for (int32_t bt : {0, 3, -3, 64, top, -top}) prime(33, 7, pp, bt);
   }
-  // Theta -0 (sign set, magnitude 0) on the normal and on the bump, in every quadrant.
+  // Theta -0 (sign set, magnitude 0) on the normal and in the bump texel, in every quadrant.
   raw({123, kMinusZero}, {45, 20});
   raw({0, kMinusZero}, {0, kMinusZero});
   raw({511, kMinusZero}, {128, kMinusZero | 5});
   for (int q = 0; q < 4; ++q) raw({200, 0}, {static_cast<uint32_t>(q * kQ + 10), kMinusZero});
+  // Texels the grid reads only in part: |theta| beyond Q - 1 saturates (G = Q .. 255, with
+  // either sign), B's bits above phi's are ignored, and both together.
+  for (uint32_t g : {uint32_t(kQ), uint32_t(kQ) + 1, 200u, 255u}) {
+    texel({300, 40}, g << 8 | 0x10u);
+    texel({7, kMinusZero | 3}, 0x40u << 16 | g << 8 | 0x80u);
+  }
+  for (uint32_t b : {0x7Eu, 0xFEu, 0xFFu, 0x02u}) texel({60, 20}, 0x33u << 16 | 9u << 8 | b);
+  texel({60, 20}, 0xFFFFFFu);
   // The largest deflections: |theta_D| = Q - 1 all around.
   for (int64_t pp : {0, 50, 127, 128, 200, 255, 256, 300, 384, 450, 511}) {
     for (int32_t bt : {top, -top}) prime(60, 20, pp, bt);
@@ -262,11 +275,10 @@ std::vector<Txn> DeflectBlock::random_items(std::mt19937_64& rng, size_t count) 
   std::vector<Txn> items;
   items.reserve(count);
   while (items.size() < count) {
-    if (rng() % 10 < 3) {  // uniform angles: every raw port value, -0 included
+    if (rng() % 10 < 3) {  // every raw port value: normals with -0, texels of any bits
       const uint64_t r = rng();
-      items.push_back(
-          deflect_item({static_cast<uint32_t>(r), static_cast<uint32_t>(r >> 16)},
-                       {static_cast<uint32_t>(r >> 32), static_cast<uint32_t>(r >> 48)}));
+      items.push_back(deflect_texel_item({static_cast<uint32_t>(r), static_cast<uint32_t>(r >> 16)},
+                                         static_cast<uint32_t>(r >> 32)));
     } else {  // a coherent stretch, as a render sends them
       for (const Txn& t : deflect_coherent_items(rng, static_cast<size_t>(uniform(rng, 16, 256)))) {
         if (items.size() < count) items.push_back(t);
@@ -303,7 +315,9 @@ std::vector<std::string> DeflectBlock::coverage_cases() const {
           "bypass at the pole (k_theta = 0)",
           "k = 0 (y = 0 plane)",
           "normal theta -0",
-          "bump theta -0",
+          "bump texel: sign set, |theta| 0 (reads +0)",
+          "bump texel: G >= Q (|theta| saturates to Q-1)",
+          "bump texel: B bits above phi set (ignored)",
           "largest deflection (|theta_D| = Q-1)",
           "cache: first look-up misses",
           "cache: hit after hit (same block)",
@@ -346,7 +360,11 @@ void DeflectBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&
   }
   if (a.k == 0) ++cov["k = 0 (y = 0 plane)"];
   if (normal.theta == kMinusZero) ++cov["normal theta -0"];
-  if (bump.theta == kMinusZero) ++cov["bump theta -0"];
+  const Rgb8 texel = unpack_rgb(static_cast<uint32_t>(items[index].f[D::in_bump_texel]));
+  if ((texel.b & 0x80) && texel.g == 0) ++cov["bump texel: sign set, |theta| 0 (reads +0)"];
+  if (texel.g >= kGrid.quarter()) ++cov["bump texel: G >= Q (|theta| saturates to Q-1)"];
+  if (((texel.r | uint32_t{texel.b & 0x7Fu} << 8) & ~kGrid.phi_mask()) != 0)
+    ++cov["bump texel: B bits above phi set (ignored)"];
   if (a.k_theta == top) ++cov["largest deflection (|theta_D| = Q-1)"];
 
   // The cache's sequences, from the look-ups before this one (a hit right after a miss reads

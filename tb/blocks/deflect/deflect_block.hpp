@@ -5,7 +5,8 @@
 // rtl/deflect/tmu_deflect.sv, hls/deflect/deflect_sc.hpp).
 //
 // Input items: the normal (normal_phi: SpherePhi, normal_theta: SphereTheta) and the bump
-// texel (bump_phi, bump_theta). Output: the deflected normal (phi, theta) and the access
+// map's texel (bump_texel: Rgb888, which the unit unpacks to the angles phi_D, theta_D:
+// deflect/bump_map.hpp). Output: the deflected normal (phi, theta) and the access
 // (MapAccess: 0 hit, 1 miss, 2 bypass), so the cache's behaviour is compared bit for bit.
 // Every miss requests its block from the map memory: golden predicts each request (the block
 // address, in order) and its count, block_fetches; the timed runs add stall_cycles, the
@@ -58,12 +59,15 @@ class DeflectBlock : public DescribedBlockOf<DeflectBlock> {
   mutable bool cover_looked_up_ = false;  // a look-up (not a bypass) came before
 };
 
-// An item from the angles' raw port values.
+// An item from the normal's raw port values and the bump's angles (packed into its texel).
 Txn deflect_item(deflect::SphereAngle normal, deflect::SphereAngle bump);
+// An item from the normal's raw port values and a bump texel (Rgb888, any bits).
+Txn deflect_texel_item(deflect::SphereAngle normal, uint32_t bump_texel);
 // An item from angles in grid steps: theta as a signed count (zero is +0).
 Txn deflect_steps_item(uint32_t normal_phi, int32_t normal_theta, uint32_t bump_phi,
                        int32_t bump_theta);
 deflect::SphereAngle deflect_normal(const Txn& item);
+// The bump's angles as the unit reads its texel.
 deflect::SphereAngle deflect_bump(const Txn& item);
 // The deflected normal of an output.
 deflect::SphereAngle deflect_output(const Txn& output);

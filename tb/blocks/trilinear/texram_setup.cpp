@@ -140,11 +140,12 @@ std::string describe(const TexramSetup& s, const std::string& content) {
     kind += fmt::format(" (channel {})", "RGBA"[c.single_channel & 3]);
   }
   return fmt::format(
-      "{} {} x {} ({}), {}, border u {} v {} ({}), combine {}{}, widths {},{},{}", kind,
+      "{} {} x {} ({}), {}, border u {} v {} ({}), combine {}{}, widths {},{},{}{}", kind,
       1 << s.log2_w, 1 << s.log2_h, content, texram::name(c.filter), texram::name(c.border_u),
       texram::name(c.border_v), rgba_text(c.border_rgba), texram::name(c.combine),
       c.combine == texram::Combine::kConstant ? fmt::format(" {}", rgba_text(c.constant_rgba)) : "",
-      c.widths.sub_texel, c.widths.weight, c.widths.lod_frac);
+      c.widths.sub_texel, c.widths.weight, c.widths.lod_frac,
+      c.addressing == texram::Addressing::kSphere ? ", sphere-map addressing" : "");
 }
 
 namespace {

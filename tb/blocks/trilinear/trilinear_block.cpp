@@ -36,6 +36,9 @@ constexpr int32_t kCoordMax = static_cast<int32_t>(fmts::kTexCoord.max_raw());
 constexpr int32_t kLodMin = static_cast<int32_t>(fmts::kLod.min_raw());
 constexpr int32_t kLodMax = static_cast<int32_t>(fmts::kLod.max_raw());
 static_assert(fmts::kLod.frac_bits == kFrac);
+// Sphere addressing: uN = 1 in raw UnitComp, and the bits of the coordinate port it reads.
+constexpr int32_t kUnitOne = int32_t{1} << fmts::kUnitComp.frac_bits;
+constexpr int64_t kUnitCompBits = fmts::kUnitComp.width();
 // A random run draws a new environment after this many items.
 constexpr size_t kBatch = 2500;
 
@@ -69,7 +72,7 @@ class Golden : public Model {
  public:
   explicit Golden(std::shared_ptr<const TrilinearBlock> block)
       : widths_(block->first().config.widths), unit_("trilinear", block->textures()) {}
-  void configure(const Txn& cfg) override { unit_.configure(texram_setup_of(cfg, widths_)); }
+  void configure(const Txn& cfg) override { unit_.configure(trilinear_setup_of(cfg, widths_)); }
   void step(const Txn& item, Sink& sink) override {
     if (item.f[0] == D::op_clut) {
       unit_.write_clut(static_cast<uint8_t>(item.f[D::clut_addr]),
@@ -93,7 +96,7 @@ class Ideal : public Model {
  public:
   explicit Ideal(std::shared_ptr<const TrilinearBlock> block) : block_(std::move(block)) {}
   void configure(const Txn& cfg) override {
-    setup_ = texram_setup_of(cfg, block_->first().config.widths);
+    setup_ = trilinear_setup_of(cfg, block_->first().config.widths);
     texture_ = texram::ideal_texture(block_->textures()->texture_of(setup_)->source);
     texture_.clut = clut_;
   }
@@ -105,8 +108,16 @@ class Ideal : public Model {
     }
     const double unit = std::ldexp(1.0, kFrac);
     const texram::Request q = trilinear_request(item);
-    const auto c = texram::ideal_sample(texture_, setup_.config, q.u / unit, q.v / unit,
-                                        q.lambda / unit, q.shade);
+    double u = q.u / unit, v = q.v / unit;
+    if (setup_.config.addressing ==
+        texram::Addressing::kSphere) {  // (uN + 1) / 2 W, (1 - vN) / 2 H
+      const auto unit_comp = [](int32_t port) {
+        return static_cast<double>(static_cast<int16_t>(port)) / (1 << 14);  // the low 16 bits
+      };
+      u = (unit_comp(q.u) + 1) / 2 * std::ldexp(1.0, setup_.log2_w);
+      v = (1 - unit_comp(q.v)) / 2 * std::ldexp(1.0, setup_.log2_h);
+    }
+    const auto c = texram::ideal_sample(texture_, setup_.config, u, v, q.lambda / unit, q.shade);
     uint64_t rgba = 0;
     for (double channel : c) rgba = rgba << 8 | static_cast<uint64_t>(std::lround(channel));
     Txn out;
@@ -165,6 +176,22 @@ Txn texram_cfg_item(const TexramSetup& s) {
       {uint64_t(s.log2_w), uint64_t(s.log2_h), uint64_t(c.kind), uint64_t(c.single_channel),
        uint64_t(c.filter), uint64_t(c.border_u), uint64_t(c.border_v), c.border_rgba,
        uint64_t(c.combine), c.constant_rgba, uint64_t(s.pattern), s.content});
+}
+
+Txn trilinear_cfg_item(const TexramSetup& s) {
+  Txn item = texram_cfg_item(s);
+  item.f[D::cfg_addressing] = uint64_t(s.config.addressing);
+  return item;
+}
+
+TexramSetup trilinear_setup_of(const Txn& t, const texram::Widths& widths) {
+  TexramSetup s = texram_setup_of(t, widths);
+  if (t.f[D::cfg_addressing] > uint64_t(texram::Addressing::kSphere)) {
+    throw std::invalid_argument("trilinear: a configuration item outside the encodings: " +
+                                D::table().inputs().describe(t));
+  }
+  s.config.addressing = static_cast<texram::Addressing>(t.f[D::cfg_addressing]);
+  return s;
 }
 
 TexramSetup texram_setup_of(const Txn& t, const texram::Widths& widths) {
@@ -232,7 +259,7 @@ std::string TrilinearBlock::variant() const {
 std::string TrilinearBlock::repro_options() const { return texram_repro_options(options_); }
 
 std::vector<Txn> TrilinearBlock::texture_load(const TexramSetup& setup) const {
-  std::vector<Txn> items = {texram_cfg_item(setup)};
+  std::vector<Txn> items = {trilinear_cfg_item(setup)};
   if (uses_clut(setup.config.kind)) {
     for (const Txn& t : trilinear_clut_load(*textures_->texture_of(setup))) items.push_back(t);
   }
@@ -244,7 +271,7 @@ std::vector<Txn> TrilinearBlock::setup_items() const { return texture_load(first
 std::vector<TexramSetup> TrilinearBlock::tour() const {
   // A given texture fixes the kind and size: the directed items stay in the first environment.
   std::vector<TexramSetup> out;
-  if (first_.pattern == TexturePattern::kGiven && options_.tri_image.empty()) return out;
+  if (!tours()) return out;
   // Sizes: one-texel sides, rows and columns, non-square, and the largest true-colour texture
   // (entry 2: addresses above 2^20).
   constexpr std::array<std::pair<int, int>, 15> kSizes = {{{3, 3},
@@ -265,7 +292,18 @@ std::vector<TexramSetup> TrilinearBlock::tour() const {
   for (size_t i = 0; i < kSizes.size(); ++i) {
     out.push_back(textures_->fit(tour_setup(i, kSizes[i].first, kSizes[i].second, options_)));
   }
+  // Sphere-map addressing: sides of 128 (no shift), more (shifted left), fewer (floored).
+  constexpr std::array<std::pair<int, int>, 3> kSphereSizes = {{{7, 7}, {10, 8}, {3, 5}}};
+  for (size_t i = 0; i < kSphereSizes.size(); ++i) {
+    TexramSetup s = tour_setup(i, kSphereSizes[i].first, kSphereSizes[i].second, options_);
+    s.config.addressing = texram::Addressing::kSphere;
+    out.push_back(textures_->fit(s));
+  }
   return out;
+}
+
+bool TrilinearBlock::tours() const {
+  return first_.pattern != TexturePattern::kGiven || !options_.tri_image.empty();
 }
 
 std::vector<Txn> TrilinearBlock::directed_items() const {
@@ -283,6 +321,7 @@ std::vector<Txn> TrilinearBlock::directed_items() const {
 }
 
 std::vector<Txn> TrilinearBlock::directed_samples(const TexramSetup& setup) const {
+  if (setup.config.addressing == texram::Addressing::kSphere) return directed_sphere_samples(setup);
   const auto [w, h, top] = extent(setup);
   std::vector<Txn> items;
   uint32_t shade = 0x80FF'40C0u;
@@ -362,8 +401,40 @@ std::vector<Txn> TrilinearBlock::directed_samples(const TexramSetup& setup) cons
   return items;
 }
 
+std::vector<Txn> TrilinearBlock::directed_sphere_samples(const TexramSetup& setup) const {
+  const int64_t top = extent(setup).top;
+  std::vector<Txn> items;
+  auto at = [&](int64_t un, int64_t vn, int64_t lambda) {
+    items.push_back(
+        trilinear_sample_item(clamp_coord(un), clamp_coord(vn), clamp_lod(lambda), 0x40C0'80FFu));
+  };
+  // The disc's centre, edges and corners, one LSB either side, and half way.
+  const std::initializer_list<int64_t> ends = {
+      -kUnitOne - 1,    -kUnitOne,    -kUnitOne + 1, -kUnitOne / 2, -1, 0, 1,
+      kUnitOne / 2 + 3, kUnitOne - 1, kUnitOne,      kUnitOne + 1};
+  for (int64_t lambda : {int64_t{-kOne}, int64_t{0}, int64_t{kOne / 2}, top}) {
+    for (int64_t un : ends) {
+      for (int64_t vn : ends) at(un, vn, lambda);
+    }
+  }
+  // UnitComp's whole range (|uN| up to 2), and port bits above its 16 (ignored).
+  const int64_t lo = -(int64_t{1} << (kUnitCompBits - 1)), hi = -lo - 1;
+  for (int64_t c : {lo, lo + 1, hi - 1, hi}) {
+    at(c, 0, 0);
+    at(0, c, 0);
+    at(c, c, kOne);
+  }
+  for (int64_t high : {int64_t{1}, int64_t{-1}, int64_t{0x55}}) {
+    const int64_t above = high << kUnitCompBits;
+    at(above + 1234, above - 4321, 0);
+    at(above - kUnitOne, above + kUnitOne / 3, kOne / 4);
+  }
+  return items;
+}
+
 std::vector<Txn> TrilinearBlock::random_items(std::mt19937_64& rng, size_t count) const {
   Extent e = extent(first_);
+  bool sphere = first_.config.addressing == texram::Addressing::kSphere;
   std::vector<Txn> items;
   items.reserve(count);
   auto push = [&](int64_t u, int64_t v, int64_t lambda, uint32_t shade) {
@@ -375,9 +446,17 @@ std::vector<Txn> TrilinearBlock::random_items(std::mt19937_64& rng, size_t count
     const int64_t w = e.w, h = e.h, top = e.top;
     if (items.size() >= next_batch) {  // a new environment, as a driver between batches
       next_batch += kBatch;
-      const TexramSetup setup = textures_->fit(draw_texram_setup(rng, options_));
+      TexramSetup setup = textures_->fit(draw_texram_setup(rng, options_));
+      if (rng() % 4 == 0) setup.config.addressing = texram::Addressing::kSphere;
       for (const Txn& t : texture_load(setup)) items.push_back(t);
       e = extent(setup);
+      sphere = setup.config.addressing == texram::Addressing::kSphere;
+      continue;
+    }
+    if (sphere) {  // a sphere map's (uN, vN): mostly on the disc's square, now and then anywhere
+      const int64_t reach = rng() % 8 == 0 ? kCoordMax : kUnitOne + kUnitOne / 32;
+      push(uniform(rng, -reach, reach), uniform(rng, -reach, reach),
+           uniform(rng, -kOne, top + kOne), static_cast<uint32_t>(rng()));
       continue;
     }
     const uint64_t r = rng() % 1000;
@@ -463,6 +542,11 @@ constexpr const char* kAfterCfg = "sample right after a configuration";
 constexpr const char* kOneTexelSide = "texture with a one-texel side";
 constexpr const char* kNonSquare = "non-square texture";
 constexpr const char* kHighAddress = "cell address >= 2^20 (true colour 1024 x 1024)";
+constexpr const char* kSphereExact = "sphere addressing, side 128 (no shift)";
+constexpr const char* kSphereLeft = "sphere addressing, side > 128 (shifted left)";
+constexpr const char* kSphereRight = "sphere addressing, side < 128 (shifted right, floor)";
+constexpr const char* kSphereBeyond = "sphere addressing, |uN| or |vN| > 1";
+constexpr const char* kSphereHighBits = "sphere addressing, port bits above UnitComp set";
 
 }  // namespace
 
@@ -491,6 +575,10 @@ std::vector<std::string> TrilinearBlock::coverage_cases() const {
   if (c.one_texel_side) cases.push_back(kOneTexelSide);
   if (c.non_square) cases.push_back(kNonSquare);
   if (c.largest_rgba) cases.push_back(kHighAddress);
+  if (tours()) {
+    cases.insert(cases.end(),
+                 {kSphereExact, kSphereLeft, kSphereRight, kSphereBeyond, kSphereHighBits});
+  }
   return cases;
 }
 
@@ -509,7 +597,7 @@ void TrilinearBlock::cover(const std::vector<Txn>& items, size_t index, const Tx
   for (; cover_next_ < index; ++cover_next_) {
     const Txn& t = items[cover_next_];
     if (D::table().is_cfg(t)) {
-      cover_setup_ = texram_setup_of(t, widths);
+      cover_setup_ = trilinear_setup_of(t, widths);
     } else if (t.f[0] == D::op_req) {
       try {
         for (const BankAccess& a : sample_accesses(plan_of(cover_setup_, t))) {
@@ -527,9 +615,22 @@ void TrilinearBlock::cover(const std::vector<Txn>& items, size_t index, const Tx
   if (s.log2_w != s.log2_h) ++cov[kNonSquare];
   const auto [w, h, top] = extent(s);
   const texram::Request req = trilinear_request(item);
+  if (c.addressing == texram::Addressing::kSphere && item.f[0] == D::op_req) {
+    for (const int log2 : {s.log2_w, s.log2_h}) {
+      ++cov[log2 == 7 ? kSphereExact : log2 > 7 ? kSphereLeft : kSphereRight];
+    }
+    const auto unit_comp = [](int32_t port) {
+      return fx::fit(port, fmts::kUnitComp, fx::Overflow::kWrap);
+    };
+    if (std::abs(unit_comp(req.u)) > kUnitOne || std::abs(unit_comp(req.v)) > kUnitOne)
+      ++cov[kSphereBeyond];
+    if (unit_comp(req.u) != req.u || unit_comp(req.v) != req.v) ++cov[kSphereHighBits];
+  }
   if (req.lambda < 0) ++cov[kMagnified];
   if (req.lambda > top) ++cov[kBeyondTop];
-  if (req.u < 0 || req.v < 0 || req.u >= w || req.v >= h) ++cov[kOutside];
+  const texram::Request tex =
+      texram::texel_request(textures_->texture_of(s)->geometry, c.addressing, req);
+  if (tex.u < 0 || tex.v < 0 || tex.u >= w || tex.v >= h) ++cov[kOutside];
   if (index > 0 && items[index - 1].f[0] == D::op_clut) ++cov[kAfterClut];
   if (index > 0 && D::table().is_cfg(items[index - 1])) ++cov[kAfterCfg];
 

@@ -71,7 +71,10 @@ class TrilinearBlock : public DescribedBlockOf<TrilinearBlock> {
  private:
   // The environments the directed items visit after the first (options.tri_* fixed).
   std::vector<TexramSetup> tour() const;
+  // Whether the directed items tour environments (not when a given texture fixes them).
+  bool tours() const;
   std::vector<Txn> directed_samples(const TexramSetup& setup) const;
+  std::vector<Txn> directed_sphere_samples(const TexramSetup& setup) const;
 
   BlockOptions options_;
   std::shared_ptr<const TexramTextures> textures_;
@@ -94,8 +97,12 @@ int32_t trilinear_lambda(uint64_t field);
 texram::Request trilinear_request(const Txn& item);
 
 // The configuration item of a setup, and the setup of one (config.widths = `widths`). The
-// footprint block's configuration begins with the same fields in the same slots.
+// footprint block's configuration begins with the same fields in the same slots: these write and
+// read those (texram.json's texram_cfg), config.addressing stays texel.
 Txn texram_cfg_item(const TexramSetup& setup);
 TexramSetup texram_setup_of(const Txn& cfg, const texram::Widths& widths);
+// The trilinear unit's own: the same and its field addressing.
+Txn trilinear_cfg_item(const TexramSetup& setup);
+TexramSetup trilinear_setup_of(const Txn& cfg, const texram::Widths& widths);
 
 }  // namespace tmu::tb
