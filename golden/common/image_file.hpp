@@ -1,7 +1,7 @@
 // Image files through OpenImageIO, behind an interface without its types. Every image file of
 // the project is read and written through these two functions; image_file_oiio.cpp implements
 // them. Why not OIIO directly: texsim reaches OpenImageIO only through a plugin it loads when a
-// command first touches an image (tb/texsim/oiio_plugin.hpp), because loading OpenImageIO's
+// command first touches an image (common/oiio_plugin.hpp), because loading OpenImageIO's
 // ~250 shared libraries costs ~0.3 s of CPU that short commands such as `texsim formats` need
 // not pay. Callers keep their own error messages; these return OpenImageIO's reasons.
 #pragma once

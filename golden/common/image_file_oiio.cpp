@@ -1,5 +1,5 @@
 // The image file interface (image_file.hpp) on OpenImageIO. In texsim this file is part of its
-// OpenImageIO plugin (tb/texsim/oiio_plugin.hpp); everything else links it directly.
+// OpenImageIO plugin (common/oiio_plugin.hpp); everything else links it directly.
 #include <OpenImageIO/imageio.h>
 
 #include "common/image_file.hpp"

@@ -1,6 +1,6 @@
 // OpenImageIO's TextureSystem as a reference filter, behind an interface without OIIO types
 // (as common/image_file.hpp is for image files, so that texsim reaches it through its
-// OpenImageIO plugin, tb/texsim/oiio_plugin.hpp): a TEXRAM texture made into a texture file,
+// OpenImageIO plugin, common/oiio_plugin.hpp): a TEXRAM texture made into a texture file,
 // looked up anisotropically. Used by `texsim sweep footprint`; oiio_texture.hpp adds the helpers
 // that take OIIO types. oiio_sampler.cpp, which implements the OIIO side, uses nothing else of
 // golden/: the plugin is built from it alone.

@@ -6,9 +6,9 @@
 #include <memory>
 
 #include "blocks/registry.hpp"
+#include "common/oiio_plugin.hpp"
 #include "texsim/commands.hpp"
 #include "texsim/model_levels.hpp"
-#include "texsim/oiio_plugin.hpp"
 
 namespace tmu::texsim {
 

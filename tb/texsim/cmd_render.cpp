@@ -6,10 +6,10 @@
 
 #include "common/error.hpp"
 #include "common/image.hpp"
+#include "common/oiio_plugin.hpp"
 #include "render/render.hpp"
 #include "render/tiles.hpp"
 #include "texsim/commands.hpp"
-#include "texsim/oiio_plugin.hpp"
 
 namespace tmu::texsim {
 

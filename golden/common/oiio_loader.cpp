@@ -1,7 +1,7 @@
-// texsim's definitions of the OpenImageIO entry points (common/image_file.hpp,
-// texram/oiio_sampler.hpp): each loads the plugin beside the binary on first use
-// (oiio_plugin.hpp says why) and calls its function. Linked into texsim only; everything else
-// links their OpenImageIO definitions directly (tmu_oiio, golden/CMakeLists.txt).
+// The OpenImageIO entry points (common/image_file.hpp, texram/oiio_sampler.hpp) of a program
+// with the target property TMU_OIIO_PLUGIN (texsim, the test executables): each loads the
+// plugin on first use (oiio_plugin.hpp says why) and calls its function. Everything else links
+// their OpenImageIO definitions directly (tmu_oiio, golden/CMakeLists.txt).
 #include <dlfcn.h>
 #include <fmt/format.h>
 
@@ -9,34 +9,42 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "texsim/oiio_plugin.hpp"
+#include "common/oiio_plugin.hpp"
 
-namespace tmu::texsim {
+namespace tmu {
 namespace {
 
 [[noreturn]] void fail(const std::string& why) {
   throw std::runtime_error(
-      "cannot load texsim's OpenImageIO plugin, through which every image file is read and "
-      "written (it is built beside texsim): " +
+      "cannot load the OpenImageIO plugin, through which every image file is read and written "
+      "(it is built with the program): " +
       why);
 }
 
-const OiioPlugin& load() {
-  // Beside the binary itself, wherever it is started from (a symlink resolves to it).
+// Beside the binary itself, wherever it is started from (a symlink resolves to it), else where
+// the build put it.
+std::string plugin_path() {
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) fail("cannot find texsim's directory from /proc/self/exe: " + ec.message());
-  const std::string path = (exe.parent_path() / TMU_OIIO_PLUGIN_FILE).string();
+  if (!ec) {
+    const std::filesystem::path beside = exe.parent_path() / TMU_OIIO_PLUGIN_FILE;
+    if (std::filesystem::exists(beside, ec)) return beside.string();
+  }
+  return TMU_OIIO_PLUGIN_BUILT;
+}
+
+const OiioPlugin& load() {
+  const std::string path = plugin_path();
   // RTLD_LAZY as for a linked library; RTLD_LOCAL: OpenImageIO's libraries do not join the
-  // global scope that texsim's own symbol look-ups search.
+  // global scope that the program's own symbol look-ups search.
   void* handle = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
   if (!handle) fail(dlerror());  // names the file and the reason
   auto* entry = reinterpret_cast<const OiioPlugin* (*)()>(dlsym(handle, kOiioPluginEntry));
   if (!entry) fail(fmt::format("{}: it has no {}", path, kOiioPluginEntry));
   const OiioPlugin* table = entry();
   if (table->version != kOiioPluginVersion || table->size != sizeof(OiioPlugin)) {
-    fail(fmt::format("{}: it is version {} ({} bytes), texsim expects {} ({} bytes): rebuild", path,
-                     table->version, table->size, kOiioPluginVersion, sizeof(OiioPlugin)));
+    fail(fmt::format("{}: it is version {} ({} bytes), the program expects {} ({} bytes): rebuild",
+                     path, table->version, table->size, kOiioPluginVersion, sizeof(OiioPlugin)));
   }
   return *table;  // never unloaded: its objects may outlive any caller
 }
@@ -51,28 +59,24 @@ const OiioPlugin& plugin() {
 
 void load_oiio_plugin() { plugin(); }
 
-}  // namespace tmu::texsim
-
-namespace tmu {
-
 std::unique_ptr<ImageFileReader> open_image_file(const std::string& path, std::string* why) {
-  return texsim::plugin().open_image_file(path, why);
+  return plugin().open_image_file(path, why);
 }
 
 ImageWrite write_image_file(const std::string& format_path, const std::string& file,
                             const ImageFileSpec& spec, const void* pixels, std::string* error) {
-  return texsim::plugin().write_image_file(format_path, file, spec, pixels, error);
+  return plugin().write_image_file(format_path, file, spec, pixels, error);
 }
 
 namespace texram {
 
 void make_oiio_texture(const std::string& path, int width, int height, std::vector<float> rgba) {
-  texsim::plugin().make_oiio_texture(path, width, height, std::move(rgba));
+  plugin().make_oiio_texture(path, width, height, std::move(rgba));
 }
 
 std::unique_ptr<OiioAnisoSampler> make_oiio_aniso_sampler(const std::vector<OiioTextureFile>& files,
                                                           int max_probes) {
-  return texsim::plugin().make_oiio_aniso_sampler(files, max_probes);
+  return plugin().make_oiio_aniso_sampler(files, max_probes);
 }
 
 }  // namespace texram
