@@ -31,13 +31,29 @@ int64_t floor_shift(int64_t v, int shift) {
   return fx::shift_right_round(v, shift, fx::Round::kFloor);
 }
 
-struct Resolved {
-  bool outside;
-  uint32_t x;
-};
+// The stored grid coordinate that serves texel coordinate `x` for a tap whose unresolved
+// coordinate was `raw`: a one-cell-wide grid is stored twice, and the replica is chosen by the
+// parity of the unresolved grid position so that neighbouring taps use different banks.
+uint32_t stored(uint32_t x, int64_t raw, uint32_t grid, bool blocks) {
+  const uint32_t g = blocks ? x >> 2 : x;
+  if (grid > 1) return g;
+  return static_cast<uint32_t>((blocks ? raw >> 2 : raw) & 1);
+}
 
-// The border operator on texel coordinate x of an axis of n texels (n a power of two).
-Resolved resolve(int64_t x, uint32_t n, Border border) {
+// One axis of a sphere map: (c + 1) / 2 or, flipped, (1 - c) / 2 of 2^log2 texels.
+int32_t sphere_axis(int32_t port, bool flip, int log2) {
+  const auto c = static_cast<int32_t>(fx::fit(port, formats::kUnitComp, fx::Overflow::kWrap));
+  const int64_t one = int64_t{1} << formats::kUnitComp.frac_bits;
+  const int64_t half_turns = flip ? one - c : one + c;  // 2 (texel coordinate / side), SQ.14
+  // texels = half_turns / 2^15 * 2^log2, in TexCoord's 8 fraction bits
+  constexpr int kShift = formats::kUnitComp.frac_bits + 1 - kPortFrac;  // 7
+  return static_cast<int32_t>(log2 >= kShift ? half_turns << (log2 - kShift)
+                                             : floor_shift(half_turns, kShift - log2));
+}
+
+}  // namespace
+
+Resolved resolve_border(int64_t x, uint32_t n, Border border) {
   const auto nn = static_cast<int64_t>(n);
   switch (border) {
     case Border::kWrap:
@@ -55,21 +71,6 @@ Resolved resolve(int64_t x, uint32_t n, Border border) {
   return {true, 0};
 }
 
-// The stored grid coordinate that serves texel coordinate `x` for a tap whose unresolved
-// coordinate was `raw`: a one-cell-wide grid is stored twice, and the replica is chosen by the
-// parity of the unresolved grid position so that neighbouring taps use different banks.
-uint32_t stored(uint32_t x, int64_t raw, uint32_t grid, bool blocks) {
-  const uint32_t g = blocks ? x >> 2 : x;
-  if (grid > 1) return g;
-  return static_cast<uint32_t>((blocks ? raw >> 2 : raw) & 1);
-}
-
-struct Axis {
-  int64_t t0 = 0;  // unresolved first tap
-  uint32_t w = 0;  // W-bit weight of the second tap
-};
-
-// Taps of one axis at `level`: bilinear (t0, t0 + 1, weight) or nearest (t0 only).
 // Bilinear rounds the coordinate to S fraction bits at the level (half up): the weights are then
 // within half a step of the exact ones, which bounds the sample's error by 2 levels against the
 // ideal (tests/texram_trilinear_test.cpp); truncating them erred by up to a whole step, toward
@@ -84,19 +85,6 @@ Axis axis_taps(int32_t coord, int level, bool nearest, const Widths& widths) {
   return {t0, to_width(static_cast<uint32_t>(sc - (t0 << s)), s, widths.weight)};
 }
 
-// One axis of a sphere map: (c + 1) / 2 or, flipped, (1 - c) / 2 of 2^log2 texels.
-int32_t sphere_axis(int32_t port, bool flip, int log2) {
-  const auto c = static_cast<int32_t>(fx::fit(port, formats::kUnitComp, fx::Overflow::kWrap));
-  const int64_t one = int64_t{1} << formats::kUnitComp.frac_bits;
-  const int64_t half_turns = flip ? one - c : one + c;  // 2 (texel coordinate / side), SQ.14
-  // texels = half_turns / 2^15 * 2^log2, in TexCoord's 8 fraction bits
-  constexpr int kShift = formats::kUnitComp.frac_bits + 1 - kPortFrac;  // 7
-  return static_cast<int32_t>(log2 >= kShift ? half_turns << (log2 - kShift)
-                                             : floor_shift(half_turns, kShift - log2));
-}
-
-}  // namespace
-
 Request texel_request(const Geometry& g, Addressing addressing, const Request& request) {
   if (addressing == Addressing::kTexel) return request;
   Request r = request;
@@ -105,17 +93,13 @@ Request texel_request(const Geometry& g, Addressing addressing, const Request& r
   return r;
 }
 
-SamplePlan plan_sample(const Geometry& g, const SamplerConfig& config, const Request& port) {
-  const Request request = texel_request(g, config.addressing, port);
+LevelChoice choose_levels(int top, const SamplerConfig& config, int32_t request_lambda) {
   const Widths& widths = config.widths;
   check_widths(widths);
-  SamplePlan plan;
-  plan.planes = g.planes();
-  const int top = g.levels() - 1;
+  LevelChoice plan;
   // lambda with its top L fraction bits (floor), still scaled by 2^8.
-  const int64_t lambda = floor_shift(request.lambda, kLodFrac - widths.lod_frac)
+  const int64_t lambda = floor_shift(request_lambda, kLodFrac - widths.lod_frac)
                          << (kLodFrac - widths.lod_frac);
-  const bool nearest = config.filter == Filter::kNearest;
   plan.trilinear = config.filter == Filter::kTrilinear;
   if (plan.trilinear) {
     if (lambda <= 0) {
@@ -136,7 +120,17 @@ SamplePlan plan_sample(const Geometry& g, const SamplerConfig& config, const Req
     plan.level = {d, d};
     plan.levels_read = 1;
   }
-  plan.taps_per_level = nearest ? 1 : 4;
+  plan.taps_per_level = config.filter == Filter::kNearest ? 1 : 4;
+  return plan;
+}
+
+SamplePlan plan_sample(const Geometry& g, const SamplerConfig& config, const Request& port) {
+  const Request request = texel_request(g, config.addressing, port);
+  const Widths& widths = config.widths;
+  const bool nearest = config.filter == Filter::kNearest;
+  SamplePlan plan;
+  static_cast<LevelChoice&>(plan) = choose_levels(g.levels() - 1, config, request.lambda);
+  plan.planes = g.planes();
 
   for (int j = 0; j < plan.levels_read; ++j) {
     const int l = plan.level[static_cast<size_t>(j)];
@@ -146,8 +140,8 @@ SamplePlan plan_sample(const Geometry& g, const SamplerConfig& config, const Req
     plan.wy[static_cast<size_t>(j)] = ay.w;
     for (int k = 0; k < plan.taps_per_level; ++k) {
       const int64_t rx = ax.t0 + (k & 1), ry = ay.t0 + (k >> 1);
-      const Resolved x = resolve(rx, g.texel_width(l), config.border_u);
-      const Resolved y = resolve(ry, g.texel_height(l), config.border_v);
+      const Resolved x = resolve_border(rx, g.texel_width(l), config.border_u);
+      const Resolved y = resolve_border(ry, g.texel_height(l), config.border_v);
       Tap& tap = plan.taps[static_cast<size_t>(j)][static_cast<size_t>(k)];
       tap.outside = x.outside || y.outside;
       tap.x = x.x;

@@ -42,14 +42,34 @@ struct Tap {
   BankCell cell;          // plane-0 cell (texels, or the CCC block holding the texel)
 };
 
+// The levels a sample reads and their blend (the rule above), in a pyramid of top + 1 levels.
+struct LevelChoice {
+  bool trilinear = false;      // blend two levels (weights 2^W - wl, wl), drop 3W bits
+  int levels_read = 1;         // 1 (nearest, bilinear, or level weight 0) or 2
+  int taps_per_level = 4;      // 1 (nearest) or 4 (x0y0, x1y0, x0y1, x1y1)
+  std::array<int, 2> level{};  // levels of the (up to) two tap groups
+  uint32_t wl = 0;             // W-bit weight of the second level
+};
+LevelChoice choose_levels(int top, const SamplerConfig& config, int32_t lambda);
+
+// The taps of one axis at a level: bilinear (t0, t0 + 1, w the weight of t0 + 1) or nearest
+// (t0 only); t0 is not yet resolved by the border operator.
+struct Axis {
+  int64_t t0 = 0;
+  uint32_t w = 0;
+};
+Axis axis_taps(int32_t coord, int level, bool nearest, const Widths& widths);
+
+// The border operator on texel coordinate x of an axis of n texels (n a power of two).
+struct Resolved {
+  bool outside;  // border colour: the tap reads nothing
+  uint32_t x;
+};
+Resolved resolve_border(int64_t x, uint32_t n, Border border);
+
 // Everything about one sample that comes before the memory.
-struct SamplePlan {
-  bool trilinear = false;              // blend two levels (weights 2^W - wl, wl), drop 3W bits
-  int levels_read = 1;                 // 1 (nearest, bilinear, or level weight 0) or 2
-  int taps_per_level = 4;              // 1 (nearest) or 4 (x0y0, x1y0, x0y1, x1y1)
-  std::array<int, 2> level{};          // levels of the (up to) two tap groups
+struct SamplePlan : LevelChoice {
   std::array<uint32_t, 2> wx{}, wy{};  // W-bit weight of x1 and y1 per level
-  uint32_t wl = 0;                     // W-bit weight of the second level
   std::array<std::array<Tap, 4>, 2> taps{};
   std::array<std::optional<uint32_t>, 8> bank_address;  // plane-0 address read in each bank
   int planes = 1;  // accesses per sample (plane p reads address + p)
