@@ -28,7 +28,7 @@
 
 namespace tmu::clipmap {
 
-inline constexpr int kMaxLog2Virtual = formats::kMaxClipLog2;  // 32k x 32k
+inline constexpr int kMaxLog2Virtual = 15;  // 32k x 32k (003's example)
 inline constexpr int kMaxLevels = kMaxLog2Virtual + 1;
 inline constexpr int kMaxLog2Tile = formats::kMaxMipLog2;  // the TEXRAM's largest level: 1024
 
