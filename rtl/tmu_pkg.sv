@@ -280,9 +280,6 @@ package tmu_pkg;
   // TEXRAM: largest texture side is 2^10 = 1024 texels
   localparam int unsigned MaxMipLog2 = 10;
 
-  // clip-map: largest virtual texture side is 2^15 = 32768 texels
-  localparam int unsigned MaxClipLog2 = 15;
-
   // TEXRAM memory banks
   localparam int unsigned Banks = 8;
 
