@@ -243,15 +243,34 @@ tmu_mutant(trilinear sphere FILE texram/tmu_trilinear_sphere.sv
   FROM "wide >>> (ShiftLog2 - log2_i)" TO "wide >> (ShiftLog2 - log2_i)"
   WHY "sphere addressing below 128 texels shifts logically: a coordinate left of the map (uN < -1) becomes a huge positive one")
 tmu_mutant(trilinear unreset FILE texram/tmu_trilinear.sv EXPECT x-leak
-  FROM "      s1_valid_q    <= 1'b0;\n      s2_valid_q    <= 1'b0;\n      s3_valid_q    <= 1'b0;\n      s4_valid_q    <= 1'b0;\n      s5_valid_q    <= 1'b0;\n"
+  FROM "      s1_valid_q    <= 1'b0;\n      s2_valid_q    <= 1'b0;\n      s3_valid_q    <= 1'b0;\n      s4_valid_q    <= 1'b0;\n"
   TO ""
-  WHY "the five request stages' valids keep their initial values through reset (random samples enter)")
+  WHY "the four address stages' valids keep their initial values through reset (random samples enter)")
 tmu_mutant(trilinear round_w6 VARIANT s6w6l6 FILE texram/tmu_trilinear_blend.sv
   FROM "ZW'(1) << (3 * W - 1)" TO "ZW'(1) << (3 * W - 2)"
   WHY "at W = 6 the blend rounds with a quarter instead of half an LSB")
 tmu_mutant(trilinear weight_w4 VARIANT s4w4l4 FILE texram/tmu_trilinear_axis.sv
   FROM "s[Frac-1 -: WeightBits]" TO "s[Frac-2 -: WeightBits]"
   WHY "at W = 4 the filter weight is read one bit too low (frac(s) halved, its top bit lost)")
+
+# Clip-map address unit (003): virtual coordinates, toroidal tiles, the two substitution rules,
+# the load port's writes (tmu_texram_access behind it, the trilinear unit's).
+tmu_block(clipmap)
+tmu_mutant(clipmap toroid FILE texram/tmu_clip_address.sv
+  FROM "assign sx       = side_log2 == '0 ? CoordW'(replica_x_i) : x_i & mask;"
+  TO "assign sx       = side_log2 == '0 ? CoordW'(replica_x_i) : x_i & (mask >> 1);"
+  WHY "the toroidal position drops the tile's top column bit: two texels of a row share a cell")
+tmu_mutant(clipmap coarsest FILE texram/tmu_clip_tap.sv
+  FROM "for (int m = Levels - 1; m >= 0; m--) begin" TO "for (int m = 0; m < Levels; m++) begin"
+  WHY "a wayward tap takes the coarsest tile that holds it, not the first")
+tmu_mutant(clipmap raise FILE texram/tmu_clipmap.sv
+  FROM "held = holds[s1_level0_q] && (!s1_two_q || holds[s1_level1_q]);"
+  TO "held = holds[s1_level0_q];"
+  WHY "per-sample substitution tests the first level only: a trilinear sample's second level reads taps its tile does not hold")
+tmu_mutant(clipmap unreset FILE texram/tmu_clipmap.sv EXPECT x-leak
+  FROM "      s1_valid_q    <= 1'b0;\n      s2_valid_q    <= 1'b0;\n"
+  TO ""
+  WHY "the first two stages' valids keep their initial values through reset (random samples enter)")
 
 # TEXRAM bank address unit (000 §2, Fig. 2), the address logic tmu_mipgen and tmu_trilinear
 # instantiate. Combinational, without a flop: no x-leak mutant (no reset to remove, nothing

@@ -115,6 +115,26 @@ package tmu_pkg;
   localparam int unsigned TexAddressingFrac = 0;
   typedef logic [TexAddressingW-1:0] tex_addressing_t;
 
+  // ClipLog2: UQ4.0, clip-map: log2 of the virtual texture's side, 2..15 (32k)
+  localparam int unsigned ClipLog2W = 4;
+  localparam int unsigned ClipLog2Frac = 0;
+  typedef logic [ClipLog2W-1:0] clip_log2_t;
+
+  // ClipCoord: UQ15.0, clip-map: a texel coordinate in a virtual level, 0..32767
+  localparam int unsigned ClipCoordW = 15;
+  localparam int unsigned ClipCoordFrac = 0;
+  typedef logic [ClipCoordW-1:0] clip_coord_t;
+
+  // ClipBound: UQ16.0, clip-map: a region's bound in a virtual level's texels, 0..32768 (the end exclusive)
+  localparam int unsigned ClipBoundW = 16;
+  localparam int unsigned ClipBoundFrac = 0;
+  typedef logic [ClipBoundW-1:0] clip_bound_t;
+
+  // ClipSubstitution: UQ1.0, clip-map: a wayward sample's substitute: 0 per sample (lambda raised), 1 per tap
+  localparam int unsigned ClipSubstitutionW = 1;
+  localparam int unsigned ClipSubstitutionFrac = 0;
+  typedef logic [ClipSubstitutionW-1:0] clip_substitution_t;
+
   // PixelCoord: UQ12.0, pixel x or y of a fragment, 0..4095
   localparam int unsigned PixelCoordW = 12;
   localparam int unsigned PixelCoordFrac = 0;
@@ -279,6 +299,9 @@ package tmu_pkg;
 
   // TEXRAM: largest texture side is 2^10 = 1024 texels
   localparam int unsigned MaxMipLog2 = 10;
+
+  // clip-map: largest virtual texture side is 2^15 = 32768 texels
+  localparam int unsigned MaxClipLog2 = 15;
 
   // TEXRAM memory banks
   localparam int unsigned Banks = 8;

@@ -28,13 +28,16 @@
 
 namespace tmu::clipmap {
 
-inline constexpr int kMaxLog2Virtual = 15;  // 32k x 32k (003's example)
+inline constexpr int kMaxLog2Virtual = formats::kMaxClipLog2;  // 32k x 32k (003's example)
 inline constexpr int kMaxLevels = kMaxLog2Virtual + 1;
+inline constexpr int kMinLog2Tile = 2;  // 4 x 4: smaller tiles hold no 2 x 2 footprint to spare
 inline constexpr int kMaxLog2Tile = formats::kMaxMipLog2;  // the TEXRAM's largest level: 1024
+// Levels that can be clipped: the unit has a region register set for each.
+inline constexpr int kMaxClippedLevels = kMaxLog2Virtual - kMinLog2Tile;
 
 class ClipGeometry {
  public:
-  // Throws std::invalid_argument for V outside 1..15, t outside 1..10 or t > V, planes other
+  // Throws std::invalid_argument for V outside 2..15, t outside 2..10 or t > V, planes other
   // than 1 or 4, or a clip-map whose cells do not fit a bank's addresses (BankAddr).
   ClipGeometry(int log2_virtual, int log2_tile, int planes);
 

@@ -184,6 +184,19 @@ void write(texram::BankImage& banks, const BankAccess& a) {
   }
 }
 
+uint32_t colour_of(const ClipPlan& p, const texram::AccessData& data, const Config& config,
+                   const texram::Clut32& clut, uint32_t shade) {
+  std::array<std::array<uint32_t, 4>, 2> colours{};
+  for (size_t j = 0; j < static_cast<size_t>(p.plan.levels_read); ++j) {
+    for (size_t k = 0; k < static_cast<size_t>(p.plan.taps_per_level); ++k) {
+      colours[j][k] =
+          texram::tap_colour(p.plan.taps[j][k], data, config.sampler.kind, config.sampler, clut);
+    }
+  }
+  return texram::combine(texram::blend_taps(p.plan, colours, config.sampler.widths),
+                         config.sampler, shade);
+}
+
 uint32_t sample(const ClipMemory& memory, const Config& config, const Regions& regions,
                 const texram::Request& request, ClipPlan* plan_out) {
   const ClipPlan p = plan_clip_sample(memory.geometry, config, regions, request);
@@ -195,16 +208,8 @@ uint32_t sample(const ClipMemory& memory, const Config& config, const Regions& r
       if (a.enable & (1u << b)) data[b][plane] = memory.banks[b][a.address[b]];
     }
   }
-  std::array<std::array<uint32_t, 4>, 2> colours{};
-  for (size_t j = 0; j < static_cast<size_t>(p.plan.levels_read); ++j) {
-    for (size_t k = 0; k < static_cast<size_t>(p.plan.taps_per_level); ++k) {
-      colours[j][k] = texram::tap_colour(p.plan.taps[j][k], data, config.sampler.kind,
-                                         config.sampler, memory.clut);
-    }
-  }
   if (plan_out) *plan_out = p;
-  return texram::combine(texram::blend_taps(p.plan, colours, config.sampler.widths), config.sampler,
-                         request.shade);
+  return colour_of(p, data, config, memory.clut, request.shade);
 }
 
 }  // namespace tmu::clipmap

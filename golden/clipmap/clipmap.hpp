@@ -79,8 +79,8 @@ struct Region {
   bool holds(uint32_t x, uint32_t y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
   friend bool operator==(const Region&, const Region&) = default;
 };
-// One register set per level that can be clipped (levels 0 .. kMaxLevels - 2).
-using Regions = std::array<Region, kMaxLevels - 1>;
+// One register set per level that can be clipped (a write to a level beyond is ignored).
+using Regions = std::array<Region, kMaxClippedLevels>;
 
 // A sample's plan: the trilinear unit's (levels, weights, taps with their cells, the bank
 // access) with the level each tap is read from, and what substitution did.
@@ -124,6 +124,11 @@ struct Load {
 // Its writes, one access per byte plane (none for a level beyond the top).
 std::vector<BankAccess> load_writes(const ClipGeometry& geometry, const Load& load);
 void write(texram::BankImage& banks, const BankAccess& access);
+
+// The colour of a planned sample from the bytes its accesses read (data[bank][plane]): the
+// taps' texels, the blend and eq. 5. RGBA8888.
+uint32_t colour_of(const ClipPlan& plan, const texram::AccessData& data, const Config& config,
+                   const texram::Clut32& clut, uint32_t shade);
 
 // The whole unit on one request: plan, read, convert, blend, combine. Returns RGBA8888.
 uint32_t sample(const ClipMemory& memory, const Config& config, const Regions& regions,

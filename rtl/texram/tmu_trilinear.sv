@@ -24,6 +24,7 @@
 ///               (tmu_trilinear_border)
 ///   S4 address per tap: bank and address (tmu_bank_address, alone in its stage: its level
 ///               offset sum is the deepest logic of the unit)
+///   then tmu_texram_access, shared with the clip-map unit:
 ///   S5 issue    per bank: read enable and address (the taps' cells, shared ones once).
 ///               Drives the memory request from registers: one access per plane, plane p
 ///               at address + p. Each sample takes an entry of the in-flight buffer
@@ -153,17 +154,10 @@ module tmu_trilinear #(
   localparam int unsigned CW       = tmu_pkg::Rgba8888W;  // 32
   localparam int unsigned TapW     = 18;                  // unresolved tap coordinate
   localparam int unsigned InFlight = 4;                   // samples between issue and T
-  localparam int unsigned PtrW     = $clog2(InFlight);
-  localparam int unsigned DataW    = tmu_pkg::Planes * Banks * 8;  // an entry's bytes
   // Per tap in the in-flight buffer: outside, bank, texel within the CCC block (tx, ty).
   localparam int unsigned TapInfoW = 1 + tmu_pkg::BankW + 4;
   // An entry's information: {shade, wl, wy, wx, taps}.
-  localparam int unsigned InfoTaps  = 0;
-  localparam int unsigned InfoWx    = Taps * TapInfoW;
-  localparam int unsigned InfoWy    = InfoWx + 2 * W;
-  localparam int unsigned InfoWl    = InfoWy + 2 * W;
-  localparam int unsigned InfoShade = InfoWl + W;
-  localparam int unsigned InfoW     = InfoShade + CW;
+  localparam int unsigned InfoW    = Taps * TapInfoW + 5 * W + CW;  // tmu_texram_access's
 
   if (SubTexelBits < 1 || SubTexelBits > 8 || WeightBits < 1 || WeightBits > 8 ||
       LodFracBits < 1 || LodFracBits > 8) begin : gen_check_params
@@ -179,14 +173,12 @@ module tmu_trilinear #(
   logic                nearest, trilinear;
   logic                clamp_u, border_u, mirror_u, clamp_v, border_v, mirror_v;
   tmu_pkg::mip_log2_t  top;
-  logic [1:0]          last_plane;
 
   assign kind_index       = cfg_kind_i == KindIndex;
   assign kind_true_colour = cfg_kind_i == KindTrueColour;
   assign kind_single      = cfg_kind_i == KindSingle;
   assign kind_ccc         = cfg_kind_i == KindCcc;
   assign four_planes      = kind_true_colour || kind_ccc;
-  assign last_plane       = four_planes ? 2'd3 : 2'd0;
   assign nearest          = cfg_filter_i == FilterNearest;
   assign trilinear        = cfg_filter_i == FilterTrilinear;
   assign clamp_u          = cfg_border_u_i == BorderClamp;
@@ -199,8 +191,9 @@ module tmu_trilinear #(
 
   // ---- S1: request and levels ---------------------------------------------------------------
 
-  logic                s1_valid_q, s2_valid_q, s3_valid_q, s4_valid_q, s5_valid_q;
-  logic                s1_ready, s2_ready, s3_ready, s4_ready, s5_ready, s5_leave;
+  logic                s1_valid_q, s2_valid_q, s3_valid_q, s4_valid_q;
+  logic                s1_ready, s2_ready, s3_ready, s4_ready;
+  logic                acc_ready, acc_busy, clut_fire;
   logic                req_fire;
 
   tmu_pkg::tex_coord_t s1_u_q, s1_v_q;
@@ -341,177 +334,56 @@ module tmu_trilinear #(
   logic [Taps*AddrW-1:0]    s4_addr_q;
   logic [InfoW-1:0]         s4_info_q;
 
-  // ---- S5: the access ---------------------------------------------------------------------
+  // ---- S5 onward: the access and colour stages ---------------------------------------------
 
-  // Per bank: read by any tap, at that tap's address (taps of one bank share one cell).
-  logic [Banks-1:0]       bank_en;
-  logic [Banks*AddrW-1:0] bank_addr;
-  always_comb begin
-    bank_en   = '0;
-    bank_addr = '0;
-    for (int b = 0; b < Banks; b++) begin
-      for (int t = 0; t < Taps; t++) begin
-        if (s4_read_q[t] && s4_bank_q[t*3 +: 3] == 3'(b)) begin
-          bank_en[b]                  = 1'b1;
-          bank_addr[b*AddrW +: AddrW] = bank_addr[b*AddrW +: AddrW] | s4_addr_q[t*AddrW +: AddrW];
-        end
-      end
-    end
-  end
-
-  logic [Banks-1:0]       s5_en_q;
-  logic [Banks*AddrW-1:0] s5_addr_q;
-  logic [InfoW-1:0]       s5_info_q;
-  logic [1:0]             plane_q, plane_d;
-
-  // ---- In-flight buffer -----------------------------------------------------------------------
-
-  logic [InfoW-1:0]  info_q [InFlight];
-  logic [DataW-1:0]  data_q [InFlight];
-  logic [InFlight-1:0] done_q, done_d;        // the entry's bytes are all there
-  logic [PtrW-1:0]   alloc_ptr_q, rd_ptr_q;
-  logic [PtrW:0]     alloc_count_q, alloc_count_d;
-  // Entries awaiting a response, oldest first.
-  logic [PtrW-1:0]   resp_entry_q [InFlight];
-  logic [PtrW-1:0]   resp_wr_q, resp_rd_q;
-  logic [1:0]        resp_plane_q;
-  logic [63:0]       gather_q [3];
-
-  logic              has_reads, can_alloc, mem_fire, alloc, resp_last, pop, t_ready;
-  logic [PtrW-1:0]   resp_entry;
-
-  assign has_reads = s5_en_q != '0;
-  assign can_alloc = alloc_count_q != (PtrW + 1)'(InFlight);
-  assign mem_req_valid_o = s5_valid_q && has_reads && (plane_q != 2'd0 || can_alloc);
-  assign mem_fire  = mem_req_valid_o && mem_req_ready_i;
-  // The sample takes its entry with its first access, or at once when it reads nothing.
-  assign alloc     = has_reads ? mem_fire && plane_q == 2'd0 : s5_valid_q && can_alloc;
-  assign s5_leave  = has_reads ? mem_fire && plane_q == last_plane : s5_valid_q && can_alloc;
-  assign plane_d   = mem_fire ? (plane_q == last_plane ? 2'd0 : plane_q + 2'd1) : plane_q;
-
-  assign mem_req_en_o = s5_en_q;
-  for (genvar b = 0; b < Banks; b++) begin : gen_mem_addr
-    // Four planes: the base address is a multiple of 4, plane p is base + p.
-    assign mem_req_addr_o[b*AddrW +: AddrW] =
-        four_planes ? {s5_addr_q[b*AddrW + 2 +: AddrW - 2], plane_q} : s5_addr_q[b*AddrW +: AddrW];
-  end
-
-  assign resp_entry = resp_entry_q[resp_rd_q];
-  assign resp_last  = mem_resp_valid_i && resp_plane_q == last_plane;
-
-  logic head_done;
-  assign head_done     = alloc_count_q != '0 && done_q[rd_ptr_q];
-  assign pop           = head_done && t_ready;
-  assign alloc_count_d = alloc_count_q + (PtrW + 1)'(alloc) - (PtrW + 1)'(pop);
-
-  always_comb begin
-    done_d = done_q;
-    if (alloc) done_d[alloc_ptr_q] = !has_reads;
-    if (resp_last) done_d[resp_entry] = 1'b1;
-  end
-
-  // ---- T: texels and CLUT -----------------------------------------------------------------
-
-  logic [InfoW-1:0]     head_info;
-  logic [DataW-1:0]     head_data;
-  logic [Taps*CW-1:0]   texel_colour;
-  logic [Taps-1:0]      texel_use_clut;
-  logic [Taps*8-1:0]    texel_clut_index;
-
-  assign head_info = info_q[rd_ptr_q];
-  assign head_data = data_q[rd_ptr_q];
-
-  for (genvar t = 0; t < Taps; t++) begin : gen_texel
-    logic [TapInfoW-1:0] info;
-    tmu_pkg::bank_t      bank;
-    tmu_pkg::rgba8888_t  bytes;
-    assign info = head_info[InfoTaps + t*TapInfoW +: TapInfoW];
-    assign bank = info[6:4];
-    for (genvar p = 0; p < 4; p++) begin : gen_plane  // plane p in byte 3 - p
-      assign bytes[(3 - p)*8 +: 8] = head_data[p*Banks*8 + 8*32'(bank) +: 8];
-    end
-    tmu_trilinear_texel u_texel (
-      .bytes_i          (bytes),
-      .outside_i        (info[7]),
-      .tx_i             (info[1:0]),
-      .ty_i             (info[3:2]),
-      .index_i          (kind_index),
-      .true_colour_i    (kind_true_colour),
-      .single_i         (kind_single),
-      .ccc_i            (kind_ccc),
-      .single_channel_i (cfg_single_channel_i),
-      .border_rgba_i    (cfg_border_rgba_i),
-      .colour_o         (texel_colour[t*CW +: CW]),
-      .use_clut_o       (texel_use_clut[t]),
-      .clut_index_o     (texel_clut_index[t*8 +: 8])
-    );
-  end
-
-  logic                 clut_fire;
-  logic [Taps*CW-1:0]   clut_rdata;
-  logic                 t_valid_q;
-  logic [Taps*CW-1:0]   t_colour_q;
-  logic [Taps-1:0]      t_use_clut_q;
-  logic [2*W-1:0]       t_wx_q, t_wy_q;
-  logic [W-1:0]         t_wl_q;
-  tmu_pkg::rgba8888_t   t_shade_q;
-  logic                 blend_ready;
-
-  // Nothing between the request port and the texel stage: a CLUT write is ordered.
-  assign clut_ready_o = !(s1_valid_q || s2_valid_q || s3_valid_q || s4_valid_q || s5_valid_q) &&
-                        alloc_count_q == '0;
-  assign clut_fire    = clut_valid_i && clut_ready_o;
-
-  tmu_trilinear_clut #(.Ports(Taps)) u_clut (
-    .clk_i   (clk_i),
-    .we_i    (clut_fire),
-    .waddr_i (clut_addr_i),
-    .wdata_i (clut_rgba_i),
-    .re_i    (pop),
-    .raddr_i (texel_clut_index),
-    .rdata_o (clut_rdata)
-  );
-
-  assign t_ready = !t_valid_q || blend_ready;
-
-  logic [Taps*CW-1:0] colours;
-  for (genvar t = 0; t < Taps; t++) begin : gen_colour
-    assign colours[t*CW +: CW] = t_use_clut_q[t] ? clut_rdata[t*CW +: CW] : t_colour_q[t*CW +: CW];
-  end
-
-  // ---- X, Y, Z, O: blend and eq. 5 ----------------------------------------------------------
-
-  tmu_trilinear_blend #(.WeightBits(W)) u_blend (
+  tmu_texram_access #(.WeightBits(W), .InFlight(InFlight), .FirstTapWins(1'b0)) u_access (
     .clk_i              (clk_i),
     .rst_ni             (rst_ni),
+    .kind_index_i       (kind_index),
+    .kind_true_colour_i (kind_true_colour),
+    .kind_single_i      (kind_single),
+    .kind_ccc_i         (kind_ccc),
+    .single_channel_i   (cfg_single_channel_i),
+    .border_rgba_i      (cfg_border_rgba_i),
     .combine_constant_i (cfg_combine_i == CombineConstant),
     .combine_shade_i    (cfg_combine_i == CombineShade),
     .constant_rgba_i    (cfg_constant_rgba_i),
-    .in_valid_i         (t_valid_q),
-    .in_ready_o         (blend_ready),
-    .in_colours_i       (colours),
-    .in_wx_i            (t_wx_q),
-    .in_wy_i            (t_wy_q),
-    .in_wl_i            (t_wl_q),
-    .in_shade_i         (t_shade_q),
+    .in_valid_i         (s4_valid_q),
+    .in_ready_o         (acc_ready),
+    .in_read_i          (s4_read_q),
+    .in_bank_i          (s4_bank_q),
+    .in_addr_i          (s4_addr_q),
+    .in_info_i          (s4_info_q),
+    .clut_we_i          (clut_fire),
+    .clut_addr_i        (clut_addr_i),
+    .clut_rgba_i        (clut_rgba_i),
+    .busy_o             (acc_busy),
+    .mem_req_valid_o    (mem_req_valid_o),
+    .mem_req_ready_i    (mem_req_ready_i),
+    .mem_req_en_o       (mem_req_en_o),
+    .mem_req_addr_o     (mem_req_addr_o),
+    .mem_resp_valid_i   (mem_resp_valid_i),
+    .mem_resp_data_i    (mem_resp_data_i),
     .out_valid_o        (out_valid_o),
     .out_ready_i        (out_ready_i),
     .out_rgba_o         (out_rgba_o)
   );
 
+  // Nothing between the request port and the texel stage: a CLUT write is ordered.
+  assign clut_ready_o = !(s1_valid_q || s2_valid_q || s3_valid_q || s4_valid_q) && !acc_busy;
+  assign clut_fire    = clut_valid_i && clut_ready_o;
+
   // ---- Pipeline control -----------------------------------------------------------------------
 
-  assign s5_ready = !s5_valid_q || s5_leave;
-  assign s4_ready = !s4_valid_q || s5_ready;
+  assign s4_ready = !s4_valid_q || acc_ready;
   assign s3_ready = !s3_valid_q || s4_ready;
   assign s2_ready = !s2_valid_q || s3_ready;
   assign s1_ready = !s1_valid_q || s2_ready;
 
-  logic s2_load, s3_load, s4_load, s5_load;
+  logic s2_load, s3_load, s4_load;
   assign s2_load = s1_valid_q && s2_ready;
   assign s3_load = s2_valid_q && s3_ready;
   assign s4_load = s3_valid_q && s4_ready;
-  assign s5_load = s4_valid_q && s5_ready;
 
   // ---- Flops --------------------------------------------------------------------------------
 
@@ -521,31 +393,11 @@ module tmu_trilinear #(
       s2_valid_q    <= 1'b0;
       s3_valid_q    <= 1'b0;
       s4_valid_q    <= 1'b0;
-      s5_valid_q    <= 1'b0;
-      plane_q       <= 2'd0;
-      alloc_ptr_q   <= '0;
-      rd_ptr_q      <= '0;
-      alloc_count_q <= '0;
-      done_q        <= '0;
-      resp_wr_q     <= '0;
-      resp_rd_q     <= '0;
-      resp_plane_q  <= 2'd0;
-      t_valid_q     <= 1'b0;
     end else begin
       s1_valid_q    <= req_fire || (s1_valid_q && !s2_ready);
       s2_valid_q    <= s2_load || (s2_valid_q && !s3_ready);
       s3_valid_q    <= s3_load || (s3_valid_q && !s4_ready);
-      s4_valid_q    <= s4_load || (s4_valid_q && !s5_ready);
-      s5_valid_q    <= s5_load || (s5_valid_q && !s5_leave);
-      plane_q       <= plane_d;
-      alloc_ptr_q   <= alloc_ptr_q + PtrW'(alloc);
-      rd_ptr_q      <= rd_ptr_q + PtrW'(pop);
-      alloc_count_q <= alloc_count_d;
-      done_q        <= done_d;
-      resp_wr_q     <= resp_wr_q + PtrW'(alloc && has_reads);
-      resp_rd_q     <= resp_rd_q + PtrW'(resp_last);
-      if (mem_resp_valid_i) resp_plane_q <= resp_last ? 2'd0 : resp_plane_q + 2'd1;
-      t_valid_q     <= pop || (t_valid_q && !blend_ready);
+      s4_valid_q    <= s4_load || (s4_valid_q && !acc_ready);
     end
   end
 
@@ -588,54 +440,12 @@ module tmu_trilinear #(
       s4_info_q <= {s3_shade_q, s3_wl_q, s3_w_q[3*W +: W], s3_w_q[1*W +: W],
                     s3_w_q[2*W +: W], s3_w_q[0*W +: W], tap_info};
     end
-    if (s5_load) begin
-      s5_en_q   <= bank_en;
-      s5_addr_q <= bank_addr;
-      s5_info_q <= s4_info_q;
-    end
-  end
-
-  always_ff @(posedge clk_i) begin
-    if (alloc) info_q[alloc_ptr_q] <= s5_info_q;
-  end
-
-  always_ff @(posedge clk_i) begin
-    if (alloc && has_reads) resp_entry_q[resp_wr_q] <= alloc_ptr_q;
-  end
-
-  always_ff @(posedge clk_i) begin
-    if (mem_resp_valid_i && !resp_last) gather_q[resp_plane_q] <= mem_resp_data_i;
-  end
-
-  // The last plane completes the entry: planes 0..3 at [p * 64 +: 64] (one plane: plane 0).
-  always_ff @(posedge clk_i) begin
-    if (resp_last) begin
-      data_q[resp_entry] <= {mem_resp_data_i, gather_q[2], gather_q[1],
-                             four_planes ? gather_q[0] : mem_resp_data_i};
-    end
-  end
-
-  always_ff @(posedge clk_i) begin
-    if (pop) begin
-      t_colour_q   <= texel_colour;
-      t_use_clut_q <= texel_use_clut;
-      t_wx_q       <= head_info[InfoWx +: 2*W];
-      t_wy_q       <= head_info[InfoWy +: 2*W];
-      t_wl_q       <= head_info[InfoWl +: W];
-      t_shade_q    <= head_info[InfoShade +: CW];
-    end
   end
 
   // ---- Assertions ---------------------------------------------------------------------------
   // They run under Verilator (--assert); Yosys 0.23 cannot parse concurrent assertions and
   // defines SYNTHESIS.
 `ifndef SYNTHESIS
-  // Every access reads at least one bank.
-  property p_mem_req_reads;
-    @(posedge clk_i) disable iff (!rst_ni) mem_req_valid_o |-> mem_req_en_o != '0;
-  endproperty
-  a_mem_req_reads: assert property (p_mem_req_reads);
-
   // Taps in one bank need one cell (the layout guarantees it; golden throws otherwise).
   logic bank_conflict;
   always_comb begin
@@ -653,27 +463,6 @@ module tmu_trilinear #(
     @(posedge clk_i) disable iff (!rst_ni) s3_valid_q |-> !bank_conflict;
   endproperty
   a_one_cell_per_bank: assert property (p_one_cell_per_bank);
-
-  // The memory answers only accesses it accepted (an assumption on the environment).
-  logic [PtrW+3:0] accesses_pending_q;
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      accesses_pending_q <= '0;
-    end else begin
-      accesses_pending_q <= accesses_pending_q + (PtrW + 4)'(mem_fire) -
-                            (PtrW + 4)'(mem_resp_valid_i);
-    end
-  end
-  property p_resp_expected;
-    @(posedge clk_i) disable iff (!rst_ni) mem_resp_valid_i |-> accesses_pending_q != '0;
-  endproperty
-  a_resp_expected: assert property (p_resp_expected);
-
-  // The in-flight buffer never holds more than its entries.
-  property p_in_flight_bound;
-    @(posedge clk_i) disable iff (!rst_ni) alloc_count_q <= (PtrW + 1)'(InFlight);
-  endproperty
-  a_in_flight_bound: assert property (p_in_flight_bound);
 
   // The configuration is held: a change while samples are in flight is a misuse.
   property p_cfg_stable;

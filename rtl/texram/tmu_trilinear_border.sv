@@ -15,7 +15,10 @@
 /// Example: n = 8 (a = 4, level 1), t = -3: wrap 5, clamp 0, border outside, mirror 2.
 module tmu_trilinear_border #(
   /// Width of the tap coordinate (two's complement).
-  parameter int unsigned TapW = 18
+  parameter int unsigned TapW   = 18,
+  /// Width of a level's texel coordinate: the TEXRAM's 1024 (MipCoord), or a clip-map's
+  /// virtual 32k (ClipCoord, tmu_clip_hold and tmu_clipmap).
+  parameter int unsigned CoordW = tmu_pkg::MipCoordW
 ) (
   input  logic [TapW-1:0]     tap_i,
   /// log2 of the level-0 side along this axis, and the level.
@@ -28,17 +31,16 @@ module tmu_trilinear_border #(
   /// The grid is 4 x 4 CCC blocks.
   input  logic                block_grid_i,
   /// Resolved texel coordinate (0 when outside), and whether the tap is outside (border).
-  output tmu_pkg::mip_coord_t coord_o,
+  output logic [CoordW-1:0]   coord_o,
   output logic                outside_o,
   /// The stored grid coordinate holding the texel.
-  output tmu_pkg::mip_coord_t stored_o
+  output logic [CoordW-1:0]   stored_o
 );
 
-  localparam int unsigned CoordW = tmu_pkg::MipCoordW;  // 10
   localparam int unsigned Log2W  = tmu_pkg::MipLog2W;
 
-  if (TapW <= CoordW || (1 << CoordW) != (1 << tmu_pkg::MaxMipLog2)) begin : gen_check
-    $error("tmu_trilinear_border: TapW must exceed the coordinate width");
+  if (TapW <= CoordW || CoordW < tmu_pkg::MipCoordW) begin : gen_check
+    $error("tmu_trilinear_border: TapW must exceed the coordinate width, which holds MipCoord");
   end
 
   logic [Log2W-1:0]  size_log2;  // log2 n

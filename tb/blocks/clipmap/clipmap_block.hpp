@@ -1,0 +1,82 @@
+// The clip-map address unit as a co-simulation block, `texsim cosim clipmap` (003;
+// golden/clipmap/clipmap.hpp, rtl/texram/tmu_clipmap.sv, hls/texram/clipmap_sc.hpp).
+//
+// Channels (clipmap.json): req (virtual u, v SQ16.8, lambda, the shade) gives rgba; clut writes an entry; region writes a clipped level's
+// valid region; load writes a texel of a level through the unit into the memory; cfg is the
+// unit's configuration. The memory port carries the reads of every sample and the writes of
+// every load, in order: golden predicts each, with the page model's counters, and the unit's
+// counters of wayward samples (a substitution served them), substituted taps and bank conflicts.
+//
+// An environment: a virtual texture whose texel (level, x, y) is a hash of the environment's
+// content seed, level and coordinates (every level its own random bytes: the unit moves texels,
+// it does not filter levels into each other), and an eye. The stimulus writes the
+// configuration, the CLUT, the centred tiles' regions (golden/clipmap/tile_centre.hpp) and loads
+// every texel the clip-map holds; samples then fall mostly near the eye. The directed items tour
+// the hard cases: taps straddling a tile's edge, the toroidal wrap, an eye jumping further than a
+// tile (its tiles reloaded), the eye at the virtual texture's edge under each border mode, the
+// boundary between the last clipped and the first whole level, lambda below 0 inside and outside
+// the finest tile, loads and region writes right after samples, non-nested regions (conflicts),
+// both substitution rules and the largest virtual texture (32k, with 4 x 4 tiles). A random run
+// draws a new environment every few thousand items, and moves the eye (new regions and loads)
+// now and then, as the host's tile manager does between frames.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "blocks/clipmap/clipmap_ports.hpp"
+#include "blocks/registry.hpp"
+#include "clipmap/clipmap.hpp"
+#include "harness/describe.hpp"
+#include "harness/described_block.hpp"
+
+TMU_DESCRIBE(clipmap)
+
+namespace tmu::tb {
+
+// One environment: the configuration, the content seed and where the eye is (level-0 texels).
+struct ClipSetup {
+  clipmap::Config config;
+  uint32_t content = 0;
+  double eye_u = 0, eye_v = 0;
+};
+
+class ClipmapBlock : public DescribedBlockOf<ClipmapBlock> {
+ public:
+  explicit ClipmapBlock(const BlockOptions& options = {});
+  std::vector<Txn> setup_items() const override;
+  TMU_BLOCK_PIECES;
+  std::unique_ptr<Environment> environment(uint64_t seed) const override;
+
+ private:
+  // The configuration, CLUT, regions and loads that make the environment's clip-map.
+  std::vector<Txn> environment_items(const ClipSetup& setup) const;
+  std::vector<Txn> directed_samples(const ClipSetup& setup, std::mt19937_64& rng) const;
+
+  ClipSetup first_;
+  // cover() sees the items in order: the configuration and regions in effect.
+  mutable size_t cover_next_ = 0;
+  mutable clipmap::Config cover_config_;
+  mutable clipmap::Regions cover_regions_{};
+};
+
+// ---- Items: raw port values ---------------------------------------------------------------
+
+Txn clipmap_cfg_item(const clipmap::Config& config);
+clipmap::Config clipmap_config_of(const Txn& cfg);
+Txn clipmap_sample_item(int32_t u_raw, int32_t v_raw, int32_t lambda_raw, uint32_t shade = 0);
+Txn clipmap_clut_item(uint8_t index, uint32_t rgba);
+Txn clipmap_region_item(int level, const clipmap::Region& region);
+Txn clipmap_load_item(const clipmap::Load& load);
+// The region writes and loads that bring a clip-map to the eye (every clipped level's centred
+// tile, texel_of(level, x, y) for each of its texels and every whole level's): what the tile
+// manager issues for a frame from scratch.
+using TexelOf = uint32_t (*)(uint32_t content, int level, uint32_t x, uint32_t y);
+std::vector<Txn> clipmap_fill_items(const ClipSetup& setup, TexelOf texel_of);
+// The environment's texel: a hash of the seed, the level and the coordinates.
+uint32_t clipmap_texel(uint32_t content, int level, uint32_t x, uint32_t y);
+
+}  // namespace tmu::tb
