@@ -64,8 +64,8 @@ export UBSAN_OPTIONS="halt_on_error=1:abort_on_error=1:print_stacktrace=1:report
 # and 925 s wall before, 380 s and 846 s after, the two run side by side (another pair, one
 # after the other: 392 and 355 s of CPU).
 ci_targets=(tmu_fixed_tests tmu_ccc_encoder_tests tmu_ccc_bilinear_tests tmu_footprint_tests
-  tmu_texram_tests tmu_texram_oiio_tests tmu_mipgen_tests tmu_deflect_tests tmu_perlin_tests
-  tmu_host_tests tmu_fuzz_replay)
+  tmu_texram_tests tmu_texram_oiio_tests tmu_clipmap_tests tmu_mipgen_tests tmu_deflect_tests
+  tmu_perlin_tests tmu_host_tests tmu_fuzz_replay)
 
 # Tests the CI subset leaves out: the exhaustive proofs and large inputs, which run the same
 # code as their small siblings in the same executable (those run here) over many more values, so

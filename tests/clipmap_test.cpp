@@ -3,6 +3,8 @@
 // for bit; where they do not, the result is golden's at the substituted level or texels, which
 // these tests compute by their own loops. And the layout: every texel its own cell, every
 // trilinear footprint one access.
+#include "clipmap/clipmap.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,7 +12,6 @@
 #include <random>
 #include <set>
 
-#include "clipmap/clipmap.hpp"
 #include "clipmap/tile_centre.hpp"
 #include "common/test_patterns.hpp"
 #include "texram/texture.hpp"
@@ -33,7 +34,8 @@ texram::TexramTexture full_texture(int log2_side, TexelKind kind) {
 // A level's stored bytes of texel (x, y) of the whole texture as a load carries them.
 uint32_t texel_bytes(const texram::TexramTexture& full, int level, uint32_t x, uint32_t y) {
   uint32_t out = 0;
-  for (int p = 0; p < full.geometry.planes(); ++p) out |= uint32_t{full.cell(level, x, y, p)} << (24 - 8 * p);
+  for (int p = 0; p < full.geometry.planes(); ++p)
+    out |= uint32_t{full.cell(level, x, y, p)} << (24 - 8 * p);
   return out;
 }
 
@@ -184,10 +186,10 @@ struct Sampling {
   Border border;
 };
 const Sampling kSetups[] = {{TexelKind::kLuminance, Filter::kTrilinear, Border::kWrap},
-                         {TexelKind::kIndex, Filter::kBilinear, Border::kClamp},
-                         {TexelKind::kTrueColour, Filter::kTrilinear, Border::kMirror},
-                         {TexelKind::kSingle, Filter::kNearest, Border::kBorder},
-                         {TexelKind::kTrueColour, Filter::kBilinear, Border::kBorder}};
+                            {TexelKind::kIndex, Filter::kBilinear, Border::kClamp},
+                            {TexelKind::kTrueColour, Filter::kTrilinear, Border::kMirror},
+                            {TexelKind::kSingle, Filter::kNearest, Border::kBorder},
+                            {TexelKind::kTrueColour, Filter::kBilinear, Border::kBorder}};
 
 TEST(ClipmapTest, WhereTheTilesHoldEveryTapItIsTheWholePyramidsSample) {
   std::mt19937_64 rng(3);
@@ -197,14 +199,15 @@ TEST(ClipmapTest, WhereTheTilesHoldEveryTapItIsTheWholePyramidsSample) {
       const texram::TexramTexture full = full_texture(c.log2_virtual, s.kind);
       int compared = 0;
       for (int eye = 0; eye < 6; ++eye) {
-        const double eu = static_cast<double>(rng() % 300) - 20, ev = static_cast<double>(rng() % 300) - 20;
+        const double eu = static_cast<double>(rng() % 300) - 20,
+                     ev = static_cast<double>(rng() % 300) - 20;
         const Regions r = centred_regions(c, eu, ev);
         const ClipMemory m = load_clipmap(c, full, r);
         for (int i = 0; i < 3000; ++i) {
-          const texram::Request q{static_cast<int32_t>((eu + static_cast<double>(rng() % 96) - 48) * kOne),
-                                  static_cast<int32_t>((ev + static_cast<double>(rng() % 96) - 48) * kOne),
-                                  static_cast<int32_t>(rng() % (6 * kOne)) - 2 * kOne,
-                                  static_cast<uint32_t>(rng())};
+          const texram::Request q{
+              static_cast<int32_t>((eu + static_cast<double>(rng() % 96) - 48) * kOne),
+              static_cast<int32_t>((ev + static_cast<double>(rng() % 96) - 48) * kOne),
+              static_cast<int32_t>(rng() % (6 * kOne)) - 2 * kOne, static_cast<uint32_t>(rng())};
           ClipPlan p;
           const uint32_t got = sample(m, c, r, q, &p);
           if (p.wayward || !all_taps_in_tiles(c, r, p)) continue;
@@ -299,8 +302,8 @@ TEST(ClipmapTest, PerTapSubstitutionTakesTheCoarserTexelThatHoldsTheLocation) {
 }
 
 TEST(ClipmapTest, LoadsWriteTheirTexelToroidallyAndEveryReplica) {
-  const Config c = config_of(TexelKind::kTrueColour, Filter::kNearest, Border::kWrap,
-                             Substitution::kPerSample);
+  const Config c =
+      config_of(TexelKind::kTrueColour, Filter::kNearest, Border::kWrap, Substitution::kPerSample);
   const ClipGeometry g = c.geometry();
   // Virtual (37, 70) of level 0 sits at (37 mod 32, 70 mod 32) = (5, 6): bank 0 + 1 + 0.
   const std::vector<BankAccess> w = load_writes(g, {0, 37, 70, 0xA1B2C3D4u});
@@ -308,7 +311,8 @@ TEST(ClipmapTest, LoadsWriteTheirTexelToroidallyAndEveryReplica) {
   const texram::BankCell cell = g.cell(0, 5, 6, 0);
   for (int p = 0; p < 4; ++p) {
     EXPECT_EQ(w[static_cast<size_t>(p)].enable, 1u << cell.bank);
-    EXPECT_EQ(w[static_cast<size_t>(p)].address[cell.bank], cell.address + static_cast<uint32_t>(p));
+    EXPECT_EQ(w[static_cast<size_t>(p)].address[cell.bank],
+              cell.address + static_cast<uint32_t>(p));
     EXPECT_EQ(w[static_cast<size_t>(p)].data[cell.bank], (0xA1B2C3D4u >> (24 - 8 * p)) & 0xFF);
   }
   // The 1 x 1 top level: four replicas in four banks, one access per plane.

@@ -10,11 +10,11 @@ ClipGeometry::ClipGeometry(int log2_virtual, int log2_tile, int planes)
     : log2_virtual_(log2_virtual), log2_tile_(log2_tile), planes_(planes) {
   if (log2_virtual < kMinLog2Tile || log2_virtual > kMaxLog2Virtual || log2_tile < kMinLog2Tile ||
       log2_tile > kMaxLog2Tile || log2_tile > log2_virtual) {
-    throw std::invalid_argument(
-        "clip-map of 2^" + std::to_string(log2_virtual) + " texels with tiles of 2^" +
-        std::to_string(log2_tile) + ": the virtual side must be 2^2..2^" +
-        std::to_string(kMaxLog2Virtual) + ", the tile 2^2..2^" + std::to_string(kMaxLog2Tile) +
-        " and no larger");
+    throw std::invalid_argument("clip-map of 2^" + std::to_string(log2_virtual) +
+                                " texels with tiles of 2^" + std::to_string(log2_tile) +
+                                ": the virtual side must be 2^2..2^" +
+                                std::to_string(kMaxLog2Virtual) + ", the tile 2^2..2^" +
+                                std::to_string(kMaxLog2Tile) + " and no larger");
   }
   if (planes != 1 && planes != formats::kPlanes) {
     throw std::invalid_argument("clip-map: a texel has 1 or 4 byte planes");

@@ -193,8 +193,8 @@ uint32_t colour_of(const ClipPlan& p, const texram::AccessData& data, const Conf
           texram::tap_colour(p.plan.taps[j][k], data, config.sampler.kind, config.sampler, clut);
     }
   }
-  return texram::combine(texram::blend_taps(p.plan, colours, config.sampler.widths),
-                         config.sampler, shade);
+  return texram::combine(texram::blend_taps(p.plan, colours, config.sampler.widths), config.sampler,
+                         shade);
 }
 
 uint32_t sample(const ClipMemory& memory, const Config& config, const Regions& regions,

@@ -69,7 +69,9 @@ struct Config {
   Substitution substitution = Substitution::kPerSample;
   int clipped_levels() const { return log2_virtual - log2_tile; }
   // Byte planes of a texel: 4 for true colour, else 1.
-  int planes() const { return sampler.kind == texram::TexelKind::kTrueColour ? formats::kPlanes : 1; }
+  int planes() const {
+    return sampler.kind == texram::TexelKind::kTrueColour ? formats::kPlanes : 1;
+  }
   ClipGeometry geometry() const { return ClipGeometry(log2_virtual, log2_tile, planes()); }
 };
 
@@ -87,9 +89,9 @@ using Regions = std::array<Region, kMaxClippedLevels>;
 struct ClipPlan {
   texram::SamplePlan plan;
   std::array<std::array<int, 4>, 2> tap_level{};
-  bool wayward = false;       // a substitution served the sample (raised lambda, or a tap)
-  int substituted_taps = 0;   // per tap: taps read from a coarser level
-  int conflicts = 0;          // taps that wanted another cell of a bank a lower tap took
+  bool wayward = false;      // a substitution served the sample (raised lambda, or a tap)
+  int substituted_taps = 0;  // per tap: taps read from a coarser level
+  int conflicts = 0;         // taps that wanted another cell of a bank a lower tap took
 };
 
 ClipPlan plan_clip_sample(const ClipGeometry& geometry, const Config& config,

@@ -27,6 +27,16 @@ class ImageFileReader {
   // Every channel of every pixel as 8 bits, row-major, interleaved: width x height x channels
   // bytes into `data`. False on failure; error() says why.
   virtual bool read_uint8(uint8_t* data) = 0;
+  // A mip-mapped, tiled file (maketx's): the first subimage's MIP levels and their sizes, its
+  // tile size (0 x 0 when it is not tiled), and one tile of a level, the tile whose first texel
+  // is (x, y) (multiples of the tile size), every channel as 8 bits: tile_width x tile_height x
+  // channels bytes, row-major (where a tile sticks out of a small level, what the file stores).
+  // False on failure; error() says why.
+  virtual int mip_levels() = 0;
+  virtual std::pair<int, int> level_size(int level) = 0;
+  virtual int tile_width() const = 0;
+  virtual int tile_height() const = 0;
+  virtual bool read_tile_uint8(int level, int x, int y, uint8_t* data) = 0;
   virtual std::string error() = 0;
 };
 

@@ -2,6 +2,8 @@
 // OpenImageIO plugin (common/oiio_plugin.hpp); everything else links it directly.
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+
 #include "common/image_file.hpp"
 
 namespace tmu {
@@ -18,6 +20,26 @@ class OiioReader final : public ImageFileReader {
   }
   bool read_uint8(uint8_t* data) override {
     return in_->read_image(0, 0, 0, in_->spec().nchannels, OIIO::TypeDesc::UINT8, data);
+  }
+  int mip_levels() override {
+    int n = 0;
+    while (in_->spec_dimensions(0, n).width > 0) ++n;
+    return n;
+  }
+  std::pair<int, int> level_size(int level) override {
+    const OIIO::ImageSpec s = in_->spec_dimensions(0, level);
+    return {s.width, s.height};
+  }
+  int tile_width() const override { return in_->spec().tile_width; }
+  int tile_height() const override { return in_->spec().tile_height; }
+  bool read_tile_uint8(int level, int x, int y, uint8_t* data) override {
+    // A tile of a level smaller than the tile is read as far as the level goes, into the
+    // tile-shaped buffer (rows tile_width apart).
+    const OIIO::ImageSpec s = in_->spec_dimensions(0, level);
+    const int n = in_->spec().nchannels;
+    const int tw = tile_width(), th = tile_height();
+    return in_->read_tiles(0, level, x, std::min(x + tw, s.width), y, std::min(y + th, s.height), 0,
+                           1, 0, n, OIIO::TypeDesc::UINT8, data, n, OIIO::stride_t{tw} * n);
   }
   std::string error() override { return in_->geterror(); }
 

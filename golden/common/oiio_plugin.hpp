@@ -19,7 +19,7 @@ namespace tmu {
 
 // Bumped whenever OiioPlugin changes: the loader refuses a plugin built from other sources rather
 // than calling through a table of another shape.
-inline constexpr int kOiioPluginVersion = 1;
+inline constexpr int kOiioPluginVersion = 2;  // 2: ImageFileReader reads MIP levels' tiles
 
 struct OiioPlugin {
   int version = kOiioPluginVersion;

@@ -23,6 +23,8 @@
 
 namespace tmu::hls {
 
+namespace fmts = tmu::formats;
+
 class ClipmapSc : public sc_core::sc_module {
  public:
   TMU_SC_PORTS(clipmap)
@@ -58,10 +60,9 @@ class ClipmapSc : public sc_core::sc_module {
       } else if (region_valid_i.read()) {
         const auto level = static_cast<size_t>(region_level_i.read());
         if (level < regions_.size()) {
-          regions_[level] = {static_cast<uint32_t>(region_x0_i.read()),
-                             static_cast<uint32_t>(region_y0_i.read()),
-                             static_cast<uint32_t>(region_x1_i.read()),
-                             static_cast<uint32_t>(region_y1_i.read())};
+          regions_[level] = {
+              static_cast<uint32_t>(region_x0_i.read()), static_cast<uint32_t>(region_y0_i.read()),
+              static_cast<uint32_t>(region_x1_i.read()), static_cast<uint32_t>(region_y1_i.read())};
         }
       } else if (load_valid_i.read()) {
         load({static_cast<int>(load_level_i.read()), static_cast<uint32_t>(load_x_i.read()),
@@ -120,14 +121,15 @@ class ClipmapSc : public sc_core::sc_module {
   void issue(const clipmap::BankAccess& a, bool write, int plane) {
     constexpr int kW = fmts::kBankAddr.width();
     sc_port_t<fmts::kBanks> en = 0;
-    sc_port_t<fmts::kBanks * kW> addr = 0;
-    sc_port_t<fmts::kBanks * 8> wdata = 0;
+    sc_port_t<fmts::kBanks* kW> addr = 0;
+    sc_port_t<fmts::kBanks* 8> wdata = 0;
     for (int b = 0; b < fmts::kBanks; ++b) {
       const bool on = (a.enable >> b) & 1;
       en[b] = on;
       // Banks left out: a read shows 0 + plane, a write 0 (tb/blocks/clipmap/clip_memory.hpp).
-      addr.range((b + 1) * kW - 1, b * kW) =
-          on ? a.address[static_cast<size_t>(b)] : write ? 0 : static_cast<uint32_t>(plane);
+      addr.range((b + 1) * kW - 1, b * kW) = on      ? a.address[static_cast<size_t>(b)]
+                                             : write ? 0
+                                                     : static_cast<uint32_t>(plane);
       wdata.range(8 * b + 7, 8 * b) = on && write ? a.data[static_cast<size_t>(b)] : 0;
     }
     mem_req_en_o.write(en);
@@ -146,7 +148,8 @@ class ClipmapSc : public sc_core::sc_module {
   void load(const clipmap::Load& l) {
     const clipmap::Config c = config();
     int plane = 0;
-    for (const clipmap::BankAccess& a : clipmap::load_writes(c.geometry(), l)) issue(a, true, plane++);
+    for (const clipmap::BankAccess& a : clipmap::load_writes(c.geometry(), l))
+      issue(a, true, plane++);
   }
 
   void serve(const texram::Request& request) {

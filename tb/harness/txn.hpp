@@ -12,9 +12,9 @@
 
 namespace tmu::tb {
 
-// The most fields of any channel of any block (the op field included): the footprint unit's
-// configuration item.
-inline constexpr int kMaxFields = 16;
+// The most fields of any channel of any block (the op field included): the clip-map unit's
+// memory request (eight enables, eight addresses, we and eight bytes).
+inline constexpr int kMaxFields = 32;
 
 struct Txn {
   std::array<uint64_t, kMaxFields> f{};

@@ -68,15 +68,17 @@ void ClipMemory::sample(const EnvPorts& ports) {
       cells[b] = a.address[b];
       if (a.address[b] >= banks_[b].size()) {
         if (error_.empty()) {
-          error_ = fmt::format("clip-map memory: {} of bank {} cell {} at cycle {}, beyond its {} cells",
-                               write ? "write" : "read", b, a.address[b], cycle_, banks_[b].size());
+          error_ =
+              fmt::format("clip-map memory: {} of bank {} cell {} at cycle {}, beyond its {} cells",
+                          write ? "write" : "read", b, a.address[b], cycle_, banks_[b].size());
         }
         continue;
       }
       if (write) {
         banks_[b][a.address[b]] = a.data[b];
       } else {
-        data = (data & ~(uint64_t{0xFF} << (8 * b))) | (uint64_t{banks_[b][a.address[b]]} << (8 * b));
+        data =
+            (data & ~(uint64_t{0xFF} << (8 * b))) | (uint64_t{banks_[b][a.address[b]]} << (8 * b));
       }
     }
     if (a.enable == 0 && error_.empty()) {

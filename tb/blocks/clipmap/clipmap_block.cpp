@@ -48,8 +48,8 @@ int32_t clamp_lod(int64_t raw) {
   return static_cast<int32_t>(std::clamp<int64_t>(raw, kLodMin, kLodMax));
 }
 int32_t sign_extend(uint64_t field, const fx::Format& f) {
-  return static_cast<int32_t>(fx::fit(static_cast<int64_t>(field & ((uint64_t{1} << f.width()) - 1)),
-                                      f, fx::Overflow::kWrap));
+  return static_cast<int32_t>(fx::fit(
+      static_cast<int64_t>(field & ((uint64_t{1} << f.width()) - 1)), f, fx::Overflow::kWrap));
 }
 
 texram::Request request_of(const Txn& t) {
@@ -87,10 +87,9 @@ class Golden : public Model {
         return;
       }
       case D::op_load: {
-        const clipmap::Load load{static_cast<int>(item.f[D::load_level]),
-                                 static_cast<uint32_t>(item.f[D::load_x]),
-                                 static_cast<uint32_t>(item.f[D::load_y]),
-                                 static_cast<uint32_t>(item.f[D::load_texel])};
+        const clipmap::Load load{
+            static_cast<int>(item.f[D::load_level]), static_cast<uint32_t>(item.f[D::load_x]),
+            static_cast<uint32_t>(item.f[D::load_y]), static_cast<uint32_t>(item.f[D::load_texel])};
         int plane = 0;
         for (const clipmap::BankAccess& a : clipmap::load_writes(memory_->geometry, load)) {
           sink.request(0, clip_access_request(a, true, plane++));
@@ -154,8 +153,8 @@ ClipSetup draw_setup(std::mt19937_64& rng) {
   clipmap::Config& c = s.config;
   c.log2_virtual = static_cast<int>(uniform(rng, 3, 8));
   c.log2_tile = static_cast<int>(uniform(rng, 2, std::min(c.log2_virtual - 1, 4)));
-  constexpr TexelKind kKinds[] = {TexelKind::kLuminance, TexelKind::kIndex,
-                                  TexelKind::kTrueColour, TexelKind::kSingle};
+  constexpr TexelKind kKinds[] = {TexelKind::kLuminance, TexelKind::kIndex, TexelKind::kTrueColour,
+                                  TexelKind::kSingle};
   c.sampler.kind = kKinds[rng() % 4];
   c.sampler.single_channel = static_cast<int>(rng() % 4);
   c.sampler.filter = static_cast<Filter>(rng() % 3);
@@ -177,10 +176,12 @@ ClipSetup draw_setup(std::mt19937_64& rng) {
 Txn near_eye_sample(std::mt19937_64& rng, const ClipSetup& s) {
   const int64_t reach = int64_t{2} << s.config.log2_tile;
   const auto at = [&](double eye) {
-    return clamp_coord(static_cast<int64_t>(eye * kOne) + uniform(rng, -reach * kOne, reach * kOne));
+    return clamp_coord(static_cast<int64_t>(eye * kOne) +
+                       uniform(rng, -reach * kOne, reach * kOne));
   };
   const int64_t top = int64_t{s.config.log2_virtual} * kOne;
-  return clipmap_sample_item(at(s.eye_u), at(s.eye_v), clamp_lod(uniform(rng, -2 * kOne, top + kOne)),
+  return clipmap_sample_item(at(s.eye_u), at(s.eye_v),
+                             clamp_lod(uniform(rng, -2 * kOne, top + kOne)),
                              static_cast<uint32_t>(rng()));
 }
 
@@ -190,11 +191,11 @@ Txn near_eye_sample(std::mt19937_64& rng, const ClipSetup& s) {
 
 Txn clipmap_cfg_item(const clipmap::Config& c) {
   const texram::SamplerConfig& s = c.sampler;
-  return channel_item(D::table(), "cfg",
-                      {uint64_t(c.log2_virtual), uint64_t(c.log2_tile), uint64_t(s.kind),
-                       uint64_t(s.single_channel), uint64_t(s.filter), uint64_t(s.border_u),
-                       uint64_t(s.border_v), s.border_rgba, uint64_t(s.combine), s.constant_rgba,
-                       uint64_t(c.substitution)});
+  return channel_item(
+      D::table(), "cfg",
+      {uint64_t(c.log2_virtual), uint64_t(c.log2_tile), uint64_t(s.kind),
+       uint64_t(s.single_channel), uint64_t(s.filter), uint64_t(s.border_u), uint64_t(s.border_v),
+       s.border_rgba, uint64_t(s.combine), s.constant_rgba, uint64_t(c.substitution)});
 }
 
 clipmap::Config clipmap_config_of(const Txn& t) {
@@ -252,9 +253,8 @@ std::vector<Txn> clipmap_fill_items(const ClipSetup& s, TexelOf texel_of) {
   const clipmap::ClipGeometry g = c.geometry();
   for (int l = 0; l < g.levels(); ++l) {
     const bool clipped = l < c.clipped_levels();
-    const clipmap::Region r =
-        clipped ? clipmap::centred_region(c, l, s.eye_u, s.eye_v)
-                : clipmap::Region{0, 0, g.virtual_side(l), g.virtual_side(l)};
+    const clipmap::Region r = clipped ? clipmap::centred_region(c, l, s.eye_u, s.eye_v)
+                                      : clipmap::Region{0, 0, g.virtual_side(l), g.virtual_side(l)};
     if (clipped) items.push_back(clipmap_region_item(l, r));
     for (uint32_t y = r.y0; y < r.y1; ++y) {
       for (uint32_t x = r.x0; x < r.x1; ++x) {
@@ -278,7 +278,8 @@ std::vector<Txn> ClipmapBlock::environment_items(const ClipSetup& s) const {
   std::vector<Txn> items = {clipmap_cfg_item(s.config)};
   if (s.config.sampler.kind == TexelKind::kIndex) {
     for (uint32_t i = 0; i < 256; ++i)
-      items.push_back(clipmap_clut_item(static_cast<uint8_t>(i), clipmap_texel(s.content, 99, i, 0)));
+      items.push_back(
+          clipmap_clut_item(static_cast<uint8_t>(i), clipmap_texel(s.content, 99, i, 0)));
   }
   for (const Txn& t : clipmap_fill_items(s, clipmap_texel)) items.push_back(t);
   return items;
@@ -290,10 +291,9 @@ std::vector<Txn> ClipmapBlock::directed_samples(const ClipSetup& s, std::mt19937
   const clipmap::Config& c = s.config;
   std::vector<Txn> items;
   auto at = [&](double u, double v, double lambda) {
-    items.push_back(clipmap_sample_item(clamp_coord(std::llround(u * kOne)),
-                                        clamp_coord(std::llround(v * kOne)),
-                                        clamp_lod(std::llround(lambda * kOne)),
-                                        static_cast<uint32_t>(rng())));
+    items.push_back(clipmap_sample_item(
+        clamp_coord(std::llround(u * kOne)), clamp_coord(std::llround(v * kOne)),
+        clamp_lod(std::llround(lambda * kOne)), static_cast<uint32_t>(rng())));
   };
   // Taps straddling each clipped tile's edges (a texel either side at its own level and
   // between levels), lambda below 0 inside and outside the finest tile.
@@ -333,11 +333,11 @@ std::vector<Txn> ClipmapBlock::directed_items() const {
   std::vector<Txn> items = directed_samples(first_, rng);
   // Loads and region writes right after samples; a sample right after each.
   items.push_back(near_eye_sample(rng, first_));
-  items.push_back(clipmap_load_item({0, static_cast<uint32_t>(first_.eye_u),
-                                     static_cast<uint32_t>(first_.eye_v), 0x12345678u}));
+  items.push_back(clipmap_load_item(
+      {0, static_cast<uint32_t>(first_.eye_u), static_cast<uint32_t>(first_.eye_v), 0x12345678u}));
   items.push_back(near_eye_sample(rng, first_));
-  items.push_back(clipmap_region_item(0, clipmap::centred_region(first_.config, 0, first_.eye_u,
-                                                                 first_.eye_v)));
+  items.push_back(clipmap_region_item(
+      0, clipmap::centred_region(first_.config, 0, first_.eye_u, first_.eye_v)));
   items.push_back(near_eye_sample(rng, first_));
   // A tour of environments: each border mode with the eye at the virtual texture's corners;
   // both substitution rules; the toroidal wrap (an eye off the tile grid); an eye jumping
@@ -358,8 +358,12 @@ std::vector<Txn> ClipmapBlock::directed_items() const {
       {8, 4, Border::kWrap, Substitution::kPerSample, 0.93, 0.12},  // the jump
       {15, 2, Border::kWrap, Substitution::kPerSample, 0.999, 0.5},
       {15, 2, Border::kClamp, Substitution::kPerTap, 0.5, 0.999}};
+  constexpr TexelKind kTourKinds[] = {TexelKind::kLuminance, TexelKind::kIndex,
+                                      TexelKind::kTrueColour, TexelKind::kSingle};
+  size_t n = 0;
   for (const Tour& t : kTours) {
     ClipSetup s = first_;
+    s.config.sampler.kind = kTourKinds[n++ % 4];
     s.config.log2_virtual = t.v;
     s.config.log2_tile = t.t;
     s.config.sampler.filter = Filter::kTrilinear;
@@ -416,10 +420,10 @@ std::vector<Txn> ClipmapBlock::random_items(std::mt19937_64& rng, size_t count) 
                     y % 300 + static_cast<uint32_t>(rng() % 40)}));
       }
     } else if (r < 30) {  // anywhere in the port formats
-      items.push_back(clipmap_sample_item(
-          static_cast<int32_t>(uniform(rng, kCoordMin, kCoordMax)),
-          static_cast<int32_t>(uniform(rng, kCoordMin, kCoordMax)),
-          static_cast<int32_t>(uniform(rng, kLodMin, kLodMax)), static_cast<uint32_t>(rng())));
+      items.push_back(clipmap_sample_item(static_cast<int32_t>(uniform(rng, kCoordMin, kCoordMax)),
+                                          static_cast<int32_t>(uniform(rng, kCoordMin, kCoordMax)),
+                                          static_cast<int32_t>(uniform(rng, kLodMin, kLodMax)),
+                                          static_cast<uint32_t>(rng())));
     } else {
       items.push_back(near_eye_sample(rng, s));
     }
@@ -438,7 +442,8 @@ std::unique_ptr<Environment> ClipmapBlock::environment(uint64_t seed) const {
 
 namespace {
 
-constexpr const char* kKinds[] = {"kind luminance", "kind index", "kind true colour", "kind single"};
+constexpr const char* kKinds[] = {"kind luminance", "kind index", "kind true colour",
+                                  "kind single"};
 constexpr const char* kWayward = "wayward sample";
 constexpr const char* kHeld = "sample held by its tiles";
 constexpr const char* kPerTapSub = "per tap: a tap from a coarser level";
@@ -446,7 +451,8 @@ constexpr const char* kSkip = "per tap: a tap two or more levels coarser";
 constexpr const char* kRaised = "per sample: lambda raised";
 constexpr const char* kRaisedToWhole = "per sample: raised to the first whole level";
 constexpr const char* kConflict = "per tap: two taps want one bank (not nested)";
-constexpr const char* kToroidal = "a tap's tile position wraps (virtual x mod T < tile origin mod T)";
+constexpr const char* kToroidal =
+    "a tap's tile position wraps (virtual x mod T < tile origin mod T)";
 constexpr const char* kMagnified = "lambda < 0";
 constexpr const char* kWholeOnly = "every level read is whole";
 constexpr const char* kAfterLoad = "sample right after a load";
@@ -459,9 +465,9 @@ constexpr const char* kLargest = "virtual texture of 32k";
 
 std::vector<std::string> ClipmapBlock::coverage_cases() const {
   std::vector<std::string> cases(std::begin(kKinds), std::end(kKinds));
-  cases.insert(cases.end(), {kWayward, kHeld, kPerTapSub, kSkip, kRaised, kRaisedToWhole,
-                             kConflict, kToroidal, kMagnified, kWholeOnly, kAfterLoad,
-                             kAfterRegion, kLoadReplicas, kLoadIgnored, kLargest});
+  cases.insert(cases.end(), {kWayward, kHeld, kPerTapSub, kSkip, kRaised, kRaisedToWhole, kConflict,
+                             kToroidal, kMagnified, kWholeOnly, kAfterLoad, kAfterRegion,
+                             kLoadReplicas, kLoadIgnored, kLargest});
   return cases;
 }
 

@@ -1,11 +1,12 @@
 // The clip-map address unit as a co-simulation block, `texsim cosim clipmap` (003;
 // golden/clipmap/clipmap.hpp, rtl/texram/tmu_clipmap.sv, hls/texram/clipmap_sc.hpp).
 //
-// Channels (clipmap.json): req (virtual u, v SQ16.8, lambda, the shade) gives rgba; clut writes an entry; region writes a clipped level's
-// valid region; load writes a texel of a level through the unit into the memory; cfg is the
-// unit's configuration. The memory port carries the reads of every sample and the writes of
-// every load, in order: golden predicts each, with the page model's counters, and the unit's
-// counters of wayward samples (a substitution served them), substituted taps and bank conflicts.
+// Channels (clipmap.json): req (virtual u, v SQ16.8, lambda, the shade) gives rgba; clut writes an
+// entry; region writes a clipped level's valid region; load writes a texel of a level through the
+// unit into the memory; cfg is the unit's configuration. The memory port carries the reads of every
+// sample and the writes of every load, in order: golden predicts each, with the page model's
+// counters, and the unit's counters of wayward samples (a substitution served them), substituted
+// taps and bank conflicts.
 //
 // An environment: a virtual texture whose texel (level, x, y) is a hash of the environment's
 // content seed, level and coordinates (every level its own random bytes: the unit moves texels,
