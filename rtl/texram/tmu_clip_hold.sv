@@ -7,6 +7,9 @@
 ///
 /// Example: Level 1, V = 8, region [10, 42) x [0, 32), bilinear, u = 20.0 (raw 0x1400), v = 3.0:
 /// at level 1 u is 10.0, taps 9 and 10: 9 < 10, the tile does not hold the point.
+// Not traced: its internals are one per level (and per tap) and its results are the top's
+// wires (holds, tap_level, tap_x, tap_y), which are; tracing them all tripled the model's code.
+// verilator tracing_off
 module tmu_clip_hold #(
   parameter int unsigned Level = 0
 ) (

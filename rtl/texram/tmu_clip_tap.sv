@@ -9,6 +9,9 @@
 /// Example: C = 3, L = 0, (x, y) = (70, 9), regions: level 0 [40, 72) x [10, 42), level 1
 /// [20, 52) x [0, 32): level 0 does not hold (70, 9) (9 < 10), level 1 holds (35, 4): the tap
 /// is read at level 1, texel (35, 4), substituted.
+// Not traced: its internals are one per level (and per tap) and its results are the top's
+// wires (holds, tap_level, tap_x, tap_y), which are; tracing them all tripled the model's code.
+// verilator tracing_off
 module tmu_clip_tap #(
   /// Region register sets (levels 0 .. Levels - 1 can be clipped).
   parameter int unsigned Levels = 13
