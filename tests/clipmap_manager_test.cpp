@@ -29,7 +29,8 @@ std::string tiled_file(int log2_side) {
   fs::create_directories(dir);
   const std::string png = (dir / "terrain.png").string(), tx = (dir / "terrain.tx").string();
   write_image(png, patterns::smooth_field(1 << log2_side, 1 << log2_side, 11));
-  const std::string cmd = "maketx --filter box --tile 32 32 -o '" + tx + "' '" + png + "' >/dev/null 2>&1";
+  const std::string cmd =
+      "maketx --filter box --tile 32 32 -o '" + tx + "' '" + png + "' >/dev/null 2>&1";
   if (std::system(cmd.c_str()) != 0) throw std::runtime_error("maketx failed: " + cmd);
   return tx;
 }
@@ -78,9 +79,10 @@ TEST(ClipmapManagerTest, ItsClipMapSamplesLikeTheWholePyramidOfTheFile) {
       const double eu = static_cast<double>(rng() % 256), ev = static_cast<double>(rng() % 256);
       apply(m, r, manager.update(eu, ev));
       for (int i = 0; i < 2000; ++i) {
-        const texram::Request q{static_cast<int32_t>((eu + static_cast<double>(rng() % 40) - 20) * kOne),
-                                static_cast<int32_t>((ev + static_cast<double>(rng() % 40) - 20) * kOne),
-                                static_cast<int32_t>(rng() % (4 * kOne)) - kOne, 0};
+        const texram::Request q{
+            static_cast<int32_t>((eu + static_cast<double>(rng() % 40) - 20) * kOne),
+            static_cast<int32_t>((ev + static_cast<double>(rng() % 40) - 20) * kOne),
+            static_cast<int32_t>(rng() % (4 * kOne)) - kOne, 0};
         ClipPlan p;
         const uint32_t got = sample(m, c, r, q, &p);
         if (p.wayward) continue;
@@ -99,7 +101,7 @@ TEST(ClipmapManagerTest, AFrameEqualsTheSameFrameFromScratch) {
   ClipMemory m(c.geometry());
   Regions r{};
   // Small steps, a jump of more than a tile at every level, the virtual texture's edges.
-  const double eyes[][2] = {{100, 100}, {101, 100}, {101.5, 99}, {90, 120},   {250, 3},
+  const double eyes[][2] = {{100, 100}, {101, 100}, {101.5, 99}, {90, 120},    {250, 3},
                             {255, 255}, {0, 0},     {-5, 300},   {128, 127.5}, {20, 200}};
   for (const auto& e : eyes) {
     apply(m, r, path.update(e[0], e[1]));
@@ -121,15 +123,16 @@ TEST(ClipmapManagerTest, OneTexelOfEyeMovementCostsOneRowAtLevelZero) {
   EXPECT_GT(first.file_tiles_read, 0u);
   const FrameUpdate step = manager.update(101.5, 100.5);
   EXPECT_EQ(step.rows[0], 1u);
-  EXPECT_EQ(step.loads.size(), 16u + (step.rows[1] * 16u) + (step.rows[2] * 16u) +
-                                   (step.rows[3] * 16u));
+  EXPECT_EQ(step.loads.size(),
+            16u + (step.rows[1] * 16u) + (step.rows[2] * 16u) + (step.rows[3] * 16u));
   const FrameUpdate still = manager.update(101.5, 100.5);
   EXPECT_TRUE(still.loads.empty());
   EXPECT_TRUE(still.regions.empty());
 }
 
 TEST(ClipmapManagerTest, AFileItCannotUseIsAClearError) {
-  const fs::path dir = fs::temp_directory_path() / ("tmu_clipmap_bad_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("tmu_clipmap_bad_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string png = (dir / "flat.png").string();
   write_image(png, patterns::gradient(256, 256));

@@ -40,16 +40,18 @@ TileManager::TileManager(const Config& config, const std::string& path)
   }
   const int levels = config.log2_virtual + 1;
   if (file_->mip_levels() < levels) {
-    throw InputError(path, "", std::to_string(file_->mip_levels()) + " MIP levels, " +
-                                   std::to_string(levels) + " expected (make it with maketx)");
+    throw InputError(path, "",
+                     std::to_string(file_->mip_levels()) + " MIP levels, " +
+                         std::to_string(levels) + " expected (make it with maketx)");
   }
   for (int l = 0; l < levels; ++l) {
     const int side = 1 << (config.log2_virtual - l);
     if (file_->level_size(l) != std::make_pair(side, side)) {
       const auto [w, h] = file_->level_size(l);
-      throw InputError(path, "", "MIP level " + std::to_string(l) + " is " + std::to_string(w) +
-                                     " x " + std::to_string(h) + ", " + std::to_string(side) +
-                                     " x " + std::to_string(side) + " expected");
+      throw InputError(path, "",
+                       "MIP level " + std::to_string(l) + " is " + std::to_string(w) + " x " +
+                           std::to_string(h) + ", " + std::to_string(side) + " x " +
+                           std::to_string(side) + " expected");
     }
   }
 }
@@ -60,9 +62,9 @@ const std::vector<uint8_t>& TileManager::file_tile(int level, int tx, int ty) {
   if (tiles_.size() >= kMaxCachedTiles) tiles_.clear();
   std::vector<uint8_t> data(static_cast<size_t>(tile_w_) * tile_h_ * channels_);
   if (!file_->read_tile_uint8(level, tx * tile_w_, ty * tile_h_, data.data())) {
-    throw InputError(path_, "", "cannot read MIP level " + std::to_string(level) + " tile (" +
-                                    std::to_string(tx) + ", " + std::to_string(ty) +
-                                    "): " + file_->error());
+    throw InputError(path_, "",
+                     "cannot read MIP level " + std::to_string(level) + " tile (" +
+                         std::to_string(tx) + ", " + std::to_string(ty) + "): " + file_->error());
   }
   ++tiles_read_;
   return tiles_.emplace(key, std::move(data)).first->second;
@@ -72,7 +74,8 @@ uint32_t TileManager::texel(int level, uint32_t x, uint32_t y) {
   const std::vector<uint8_t>& tile =
       file_tile(level, static_cast<int>(x) / tile_w_, static_cast<int>(y) / tile_h_);
   const size_t at = (static_cast<size_t>(y % static_cast<uint32_t>(tile_h_)) * tile_w_ +
-                     x % static_cast<uint32_t>(tile_w_)) * channels_;
+                     x % static_cast<uint32_t>(tile_w_)) *
+                    channels_;
   const uint8_t r = tile[at];
   const uint8_t g = channels_ >= 3 ? tile[at + 1] : r, b = channels_ >= 3 ? tile[at + 2] : r;
   const uint8_t a = channels_ == 4 ? tile[at + 3] : 255;
@@ -90,7 +93,8 @@ uint32_t TileManager::texel(int level, uint32_t x, uint32_t y) {
 
 void TileManager::load_rect(FrameUpdate& out, int level, const Region& rect) {
   for (uint32_t y = rect.y0; y < rect.y1; ++y) {
-    for (uint32_t x = rect.x0; x < rect.x1; ++x) out.loads.push_back({level, x, y, texel(level, x, y)});
+    for (uint32_t x = rect.x0; x < rect.x1; ++x)
+      out.loads.push_back({level, x, y, texel(level, x, y)});
   }
 }
 

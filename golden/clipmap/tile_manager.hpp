@@ -40,8 +40,8 @@ namespace tmu::clipmap {
 struct FrameUpdate {
   std::vector<std::pair<int, Region>> regions;  // region writes, in order
   std::vector<Load> loads;
-  std::array<uint32_t, kMaxLevels> rows{};      // texel rows and columns loaded per level
-  uint64_t file_tiles_read = 0;                 // file tiles read from disk for this frame
+  std::array<uint32_t, kMaxLevels> rows{};  // texel rows and columns loaded per level
+  uint64_t file_tiles_read = 0;             // file tiles read from disk for this frame
 };
 
 class TileManager {
