@@ -14,8 +14,8 @@ struct Stop {
   Rgb8 colour;
 };
 // Height 0..1 to colour: deep and shallow water, sand, grass, forest, rock, snow.
-constexpr Stop kRamp[] = {{0.00, {20, 40, 110}},  {0.40, {40, 90, 170}},  {0.45, {210, 200, 140}},
-                          {0.50, {90, 150, 60}},  {0.62, {40, 100, 40}},  {0.75, {120, 110, 100}},
+constexpr Stop kRamp[] = {{0.00, {20, 40, 110}},   {0.40, {40, 90, 170}},  {0.45, {210, 200, 140}},
+                          {0.50, {90, 150, 60}},   {0.62, {40, 100, 40}},  {0.75, {120, 110, 100}},
                           {0.88, {200, 200, 200}}, {1.00, {255, 255, 255}}};
 
 Rgb8 ramp(double h) {
@@ -57,7 +57,8 @@ ImageRgb8 terrain(int log2_side, uint32_t seed) {
   }
   ImageRgb8 out(side, side);
   const auto h = [&](int x, int y) {
-    return height[static_cast<size_t>(std::clamp(y, 0, side - 1)) * side + std::clamp(x, 0, side - 1)];
+    return height[static_cast<size_t>(std::clamp(y, 0, side - 1)) * side +
+                  std::clamp(x, 0, side - 1)];
   };
   for (int y = 0; y < side; ++y) {
     for (int x = 0; x < side; ++x) {

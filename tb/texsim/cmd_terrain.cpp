@@ -46,9 +46,9 @@ void add_terrain_command(CLI::App& app, ExitCode& exit_code) {
     // maketx writes its output itself; a failed run leaves no file in place of a good one
     // because it writes to a temporary name first.
     const std::string tmp = a->out + ".tmp.tx";
-    const std::string command = fmt::format(
-        "maketx --filter box --tile {} {} -o '{}' '{}' >/dev/null 2>&1", a->tile, a->tile, tmp,
-        picture);
+    const std::string command =
+        fmt::format("maketx --filter box --tile {} {} -o '{}' '{}' >/dev/null 2>&1", a->tile,
+                    a->tile, tmp, picture);
     const int status = std::system(command.c_str());
     if (!a->keep_picture) std::filesystem::remove(picture);
     if (status != 0) {
