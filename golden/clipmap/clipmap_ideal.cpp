@@ -74,7 +74,8 @@ Footprint footprint(const Setup& s, const texram::SamplerConfig& c, int level, d
 
 bool holds_point(const Setup& s, const Footprint& f) {
   for (int k = 0; k < f.count; ++k) {
-    if (!held(s, f.taps[static_cast<size_t>(k)].level, f.taps[static_cast<size_t>(k)])) return false;
+    if (!held(s, f.taps[static_cast<size_t>(k)].level, f.taps[static_cast<size_t>(k)]))
+      return false;
   }
   return true;
 }

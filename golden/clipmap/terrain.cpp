@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <vector>
 
+#include "common/error.hpp"
 #include "perlin/noise.hpp"
 
 namespace tmu::clipmap {
@@ -74,6 +77,23 @@ ImageRgb8 terrain(int log2_side, uint32_t seed) {
     }
   }
   return out;
+}
+
+void write_terrain_mipmap(const std::string& path, int log2_side, uint32_t seed, int tile,
+                          bool keep_picture) {
+  const std::string picture = std::filesystem::path(path).replace_extension(".png").string();
+  write_image(picture, terrain(log2_side, seed));
+  const std::string tmp = path + ".tmp.tx";
+  const std::string command = "maketx --filter box --tile " + std::to_string(tile) + " " +
+                              std::to_string(tile) + " -o '" + tmp + "' '" + picture +
+                              "' >/dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  if (!keep_picture) std::filesystem::remove(picture);
+  if (status != 0) {
+    std::filesystem::remove(tmp);
+    throw InputError(path, "", "maketx failed (is openimageio-tools installed?): " + command);
+  }
+  std::filesystem::rename(tmp, path);
 }
 
 }  // namespace tmu::clipmap

@@ -7,6 +7,7 @@
 #include "common/error.hpp"
 #include "common/image.hpp"
 #include "common/oiio_plugin.hpp"
+#include "render/flyover.hpp"
 #include "render/render.hpp"
 #include "render/tiles.hpp"
 #include "texsim/commands.hpp"
@@ -21,7 +22,7 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
       "fragment goes through the units its material's chain calls for, at the chosen model level.\n"
       "Writes OUT/render.png (and render.exr for ideal) and OUT/render.report.{json,txt}.");
   struct Args {
-    std::string scene, engine = "golden", check, compare, tile;
+    std::string scene, engine = "golden", check, compare, tile, frames;
     bool waveform = false, no_progress = false;
     render::RenderOptions options;
   };
@@ -51,6 +52,9 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--inject-fault", a->options.inject_fault,
                   "Flip a bit of fragment N's result (to see --check fail)");
+  cmd->add_option("--frames", a->frames,
+                  "A fly-over scene (a \"flyover\" section, render/flyover.hpp): the frames A-B "
+                  "(default every frame of its path)");
   cmd->add_flag("--no-progress", a->no_progress, "No progress bar");
   cmd->callback([a, &exit_code] {
     load_oiio_plugin();  // before the report's clock starts
@@ -61,6 +65,22 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
     o.waveform = a->waveform;
     o.progress = !a->no_progress;
     if (!a->tile.empty()) std::tie(o.tile, o.tiles) = render::parse_tile(a->tile);
+    if (render::is_flyover(a->scene)) {
+      render::FrameRange range;
+      if (!a->frames.empty()) {
+        const auto dash = a->frames.find('-');
+        try {
+          range.first = std::stoi(a->frames.substr(0, dash));
+          range.last =
+              dash == std::string::npos ? range.first : std::stoi(a->frames.substr(dash + 1));
+        } catch (const std::exception&) {
+          throw InputError("--frames", "", "expected A or A-B, got " + a->frames);
+        }
+      }
+      exit_code.value = render::render_flyover(a->scene, o, range, std::cout);
+      return;
+    }
+    if (!a->frames.empty()) throw InputError(a->scene, "", "--frames is for a fly-over scene");
     exit_code.value = render::render_scene(a->scene, o, std::cout);
   });
 

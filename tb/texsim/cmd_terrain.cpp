@@ -4,13 +4,9 @@
 #include <fmt/format.h>
 
 #include <chrono>
-#include <cstdlib>
-#include <filesystem>
 #include <memory>
 
 #include "clipmap/terrain.hpp"
-#include "common/error.hpp"
-#include "common/image.hpp"
 #include "texsim/commands.hpp"
 
 namespace tmu::texsim {
@@ -40,22 +36,7 @@ void add_terrain_command(CLI::App& app, ExitCode& exit_code) {
   cmd->add_flag("--keep-picture", a->keep_picture, "keep the .png the file is made from");
   cmd->callback([a, &exit_code] {
     const auto start = std::chrono::steady_clock::now();
-    const std::filesystem::path out(a->out);
-    const std::string picture = std::filesystem::path(out).replace_extension(".png").string();
-    write_image(picture, clipmap::terrain(a->log2, a->seed));
-    // maketx writes its output itself; a failed run leaves no file in place of a good one
-    // because it writes to a temporary name first.
-    const std::string tmp = a->out + ".tmp.tx";
-    const std::string command =
-        fmt::format("maketx --filter box --tile {} {} -o '{}' '{}' >/dev/null 2>&1", a->tile,
-                    a->tile, tmp, picture);
-    const int status = std::system(command.c_str());
-    if (!a->keep_picture) std::filesystem::remove(picture);
-    if (status != 0) {
-      std::filesystem::remove(tmp);
-      throw InputError(a->out, "", "maketx failed (is openimageio-tools installed?): " + command);
-    }
-    std::filesystem::rename(tmp, out);
+    clipmap::write_terrain_mipmap(a->out, a->log2, a->seed, a->tile, a->keep_picture);
     fmt::print("wrote {} ({} x {} texels, {} levels, {} x {} tiles) in {:.1f} s\n", a->out,
                1 << a->log2, 1 << a->log2, a->log2 + 1, a->tile, a->tile,
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

@@ -274,6 +274,14 @@ ClipmapBlock::ClipmapBlock(const BlockOptions& options) : DescribedBlockOf(D::ta
   TMU_ADD_RTL_LEVELS(clipmap, variant());
 }
 
+ClipmapBlock::ClipmapBlock(const clipmap::Config& config, const texram::Clut32& clut)
+    : DescribedBlockOf(D::table()), given_(true), clut_(clut) {
+  clipmap::check(config);
+  first_.config = config;
+  add_level("hls", hls_level<desc::clipmap_sc, hls::ClipmapSc>());
+  TMU_ADD_RTL_LEVELS(clipmap, variant());
+}
+
 std::vector<Txn> ClipmapBlock::environment_items(const ClipSetup& s) const {
   std::vector<Txn> items = {clipmap_cfg_item(s.config)};
   if (s.config.sampler.kind == TexelKind::kIndex) {
@@ -285,7 +293,15 @@ std::vector<Txn> ClipmapBlock::environment_items(const ClipSetup& s) const {
   return items;
 }
 
-std::vector<Txn> ClipmapBlock::setup_items() const { return environment_items(first_); }
+std::vector<Txn> ClipmapBlock::setup_items() const {
+  if (!given_) return environment_items(first_);
+  std::vector<Txn> items = {clipmap_cfg_item(first_.config)};
+  if (first_.config.sampler.kind == TexelKind::kIndex) {
+    for (uint32_t i = 0; i < 256; ++i)
+      items.push_back(clipmap_clut_item(static_cast<uint8_t>(i), clut_[i]));
+  }
+  return items;
+}
 
 std::vector<Txn> ClipmapBlock::directed_samples(const ClipSetup& s, std::mt19937_64& rng) const {
   const clipmap::Config& c = s.config;

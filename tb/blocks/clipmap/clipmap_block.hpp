@@ -48,6 +48,9 @@ struct ClipSetup {
 class ClipmapBlock : public DescribedBlockOf<ClipmapBlock> {
  public:
   explicit ClipmapBlock(const BlockOptions& options = {});
+  // A given clip-map (a render's): its setup items are the configuration alone (and a CLUT for
+  // index textures, `clut`); the caller's items load it (clipmap::TileManager).
+  ClipmapBlock(const clipmap::Config& config, const texram::Clut32& clut = {});
   std::vector<Txn> setup_items() const override;
   TMU_BLOCK_PIECES;
   std::unique_ptr<Environment> environment(uint64_t seed) const override;
@@ -58,6 +61,8 @@ class ClipmapBlock : public DescribedBlockOf<ClipmapBlock> {
   std::vector<Txn> directed_samples(const ClipSetup& setup, std::mt19937_64& rng) const;
 
   ClipSetup first_;
+  bool given_ = false;  // a render's clip-map: no content of the block's own
+  texram::Clut32 clut_{};
   // cover() sees the items in order: the configuration and regions in effect.
   mutable size_t cover_next_ = 0;
   mutable clipmap::Config cover_config_;
