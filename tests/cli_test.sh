@@ -36,7 +36,7 @@ run() {
 }
 
 for cmd in "" "cosim" "ccc" "ccc encode" "ccc decode" "ccc roundtrip" "formats" "pattern" "sample" "mipgen" \
-  "sweep" "render" "merge" "levels"; do
+  "sweep" "render" "merge" "levels" "terrain"; do
   # shellcheck disable=SC2086
   expect "help: texsim $cmd" 0 "Usage" -- "$texsim" $cmd --help
 done
@@ -137,6 +137,15 @@ sed 's/"fov"/"fovv"/' "$root/scenes/plain.json" >typo.json
 expect "unknown scene key names file and field path" 2 "typo.json: camera.fovv" -- "$texsim" render typo.json --out rx
 printf '{ "camera": ' >cut.json
 expect "truncated scene names the file" 2 "cut.json" -- "$texsim" render cut.json --out rx
+sed 's/"eye": \[600, 600, 60\]/"eye": [600, 600, -1]/' "$root/scenes/flyover.json" >under.json
+expect "a fly-over's eye under the ground names the keyframe" 2 "under.json: flyover.path\[0\].eye" -- \
+  "$texsim" render under.json --out rx
+expect "fly-over frames beyond the path" 2 "frames 5..40 of a path of 12" -- \
+  "$texsim" render "$root/scenes/flyover.json" --frames 5-40 --out rx
+expect "a fly-over has no ideal render" 2 "golden, hls or rtl" -- \
+  "$texsim" render "$root/scenes/flyover.json" --engine ideal --out rx
+expect "--frames is for fly-overs" 2 "fly-over" -- \
+  "$texsim" render "$root/scenes/plain.json" --frames 1 --out rx
 [[ ! -e rx ]] && pass "no output after failed renders" || fail "rx written by a failed render"
 for band in 0 1 2; do
   run "render band $band/3" -- "$texsim" render "$root/scenes/plain.json" --tile $band/3 --out bands --no-progress

@@ -54,8 +54,8 @@ Flyover parse(const std::string& scene_path, const std::string& out_dir) {
   root.expect_object();
   root.allow_keys({"flyover"});
   const host::JsonNode f = root.at("flyover");
-  f.allow_keys({"terrain", "file", "tile_log2", "substitution", "kind", "filter", "border",
-                "frame", "fov_degrees", "sky", "path"});
+  f.allow_keys({"terrain", "file", "tile_log2", "substitution", "kind", "filter", "border", "frame",
+                "fov_degrees", "sky", "path"});
   Flyover fo;
   fo.path = scene_path;
   clipmap::Config& c = fo.config;
@@ -63,20 +63,23 @@ Flyover parse(const std::string& scene_path, const std::string& out_dir) {
   if (const auto t = f.find("terrain")) {
     t->allow_keys({"log2", "seed"});
     fo.terrain_log2 = static_cast<int>(t->at("log2").integer(2, clipmap::kMaxLog2Virtual));
-    if (const auto s = t->find("seed")) fo.terrain_seed = static_cast<uint32_t>(s->integer(0, 1 << 30));
+    if (const auto s = t->find("seed"))
+      fo.terrain_seed = static_cast<uint32_t>(s->integer(0, 1 << 30));
     c.log2_virtual = fo.terrain_log2;
-    fo.texture = (fs::path(out_dir) / fmt::format("terrain-{}-{}.tx", fo.terrain_log2,
-                                                   fo.terrain_seed))
-                     .string();
+    fo.texture =
+        (fs::path(out_dir) / fmt::format("terrain-{}-{}.tx", fo.terrain_log2, fo.terrain_seed))
+            .string();
   } else {
     fo.texture = f.at("file").string();
     const fs::path p(fo.texture);
     if (p.is_relative()) fo.texture = (fs::path(scene_path).parent_path() / p).string();
   }
-  c.log2_tile = static_cast<int>(f.at("tile_log2").integer(clipmap::kMinLog2Tile, clipmap::kMaxLog2Tile));
+  c.log2_tile =
+      static_cast<int>(f.at("tile_log2").integer(clipmap::kMinLog2Tile, clipmap::kMaxLog2Tile));
   if (const auto s = f.find("substitution")) {
-    c.substitution = s->one_of({"per-sample", "per-tap"}) == "per-tap" ? clipmap::Substitution::kPerTap
-                                                                       : clipmap::Substitution::kPerSample;
+    c.substitution = s->one_of({"per-sample", "per-tap"}) == "per-tap"
+                         ? clipmap::Substitution::kPerTap
+                         : clipmap::Substitution::kPerSample;
   }
   c.sampler.kind = texram::TexelKind::kTrueColour;
   if (const auto k = f.find("kind")) {
@@ -87,7 +90,8 @@ Flyover parse(const std::string& scene_path, const std::string& out_dir) {
     c.sampler.filter = *texram::parse_filter(k->one_of({"nearest", "bilinear", "trilinear"}));
   }
   if (const auto b = f.find("border")) {
-    c.sampler.border_u = c.sampler.border_v = *texram::parse_border(b->one_of({"wrap", "clamp", "mirror"}));
+    c.sampler.border_u = c.sampler.border_v =
+        *texram::parse_border(b->one_of({"wrap", "clamp", "mirror"}));
   }
   if (const auto fr = f.find("frame")) {
     const glm::dvec2 wh = fr->vec2();
@@ -103,7 +107,8 @@ Flyover parse(const std::string& scene_path, const std::string& out_dir) {
   }
   if (const auto s = f.find("sky")) {
     const glm::dvec3 k = s->colour3(0, 1);
-    fo.sky = {static_cast<uint8_t>(std::lround(k.r * 255)), static_cast<uint8_t>(std::lround(k.g * 255)),
+    fo.sky = {static_cast<uint8_t>(std::lround(k.r * 255)),
+              static_cast<uint8_t>(std::lround(k.g * 255)),
               static_cast<uint8_t>(std::lround(k.b * 255))};
   }
   const host::JsonNode p = f.at("path");
@@ -112,7 +117,8 @@ Flyover parse(const std::string& scene_path, const std::string& out_dir) {
   for (size_t i = 0; i < p.size(); ++i) {
     const host::JsonNode k = p[i];
     k.allow_keys({"frame", "eye", "look"});
-    Keyframe kf{static_cast<int>(k.at("frame").integer(0, 100000)), k.at("eye").vec3(), k.at("look").vec3()};
+    Keyframe kf{static_cast<int>(k.at("frame").integer(0, 100000)), k.at("eye").vec3(),
+                k.at("look").vec3()};
     if (!fo.path_keys.empty() && kf.frame <= fo.path_keys.back().frame)
       k.at("frame").fail("keyframes must be in increasing frame order");
     if (i == 0 && kf.frame != 0) k.at("frame").fail("the first keyframe is frame 0");
@@ -194,7 +200,8 @@ ImageRgb8 contact_sheet(const std::vector<ImageRgb8>& frames) {
   for (int i = 0; i < n; ++i) {
     const int ox = gap + (i % cols) * (w + gap), oy = gap + (i / cols) * (h + gap);
     for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) sheet.at(ox + x, oy + y) = frames[static_cast<size_t>(i)].at(x, y);
+      for (int x = 0; x < w; ++x)
+        sheet.at(ox + x, oy + y) = frames[static_cast<size_t>(i)].at(x, y);
     }
   }
   return sheet;
@@ -251,13 +258,14 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
   if (o.level == Level::kIdeal || (o.check && *o.check == Level::kIdeal)) {
     throw InputError(scene_path, "flyover", "a fly-over renders at golden, hls or rtl");
   }
-  fs::create_directories(o.out_dir);
   const Flyover fo = parse(scene_path, o.out_dir);
   const int last = range.last < 0 ? fo.frames() - 1 : range.last;
   if (range.first < 0 || range.first > last || last >= fo.frames()) {
-    throw InputError("--frames", "", fmt::format("frames {}..{} of a path of {} frames",
-                                                 range.first, last, fo.frames()));
+    throw InputError(
+        "--frames", "",
+        fmt::format("frames {}..{} of a path of {} frames", range.first, last, fo.frames()));
   }
+  fs::create_directories(o.out_dir);  // only once the scene and the range are good
   if (fo.terrain_log2 > 0 && !fs::exists(fo.texture)) {
     log << fmt::format("making the virtual texture {} (texsim terrain --log2 {} --seed {})\n",
                        fo.texture, fo.terrain_log2, fo.terrain_seed);
@@ -280,7 +288,8 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
     r.frame = n;
     r.centre = {cam.look.x, cam.look.y};
     const clipmap::FrameUpdate u = manager.update(r.centre.x, r.centre.y);
-    for (const auto& [level, region] : u.regions) run.items.push_back(tb::clipmap_region_item(level, region));
+    for (const auto& [level, region] : u.regions)
+      run.items.push_back(tb::clipmap_region_item(level, region));
     for (const clipmap::Load& l : u.loads) run.items.push_back(tb::clipmap_load_item(l));
     r.loads = u.loads.size();
     r.rows = u.rows;
@@ -294,13 +303,15 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
       ++r.samples;
       // The report's count of wayward samples per frame, from the plan (the unit counts them
       // over the run: its counter is checked against the sum below).
-      r.wayward += clipmap::plan_clip_sample(g, fo.config, regions, {p.u, p.v, p.lambda, 0}).wayward;
+      r.wayward +=
+          clipmap::plan_clip_sample(g, fo.config, regions, {p.u, p.v, p.lambda, 0}).wayward;
     }
     reports.push_back(r);
   }
   const auto t = std::chrono::steady_clock::now();
   run_unit(run, o.level, {});
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   if (!run.result.error.empty()) throw std::runtime_error("clipmap unit: " + run.result.error);
 
   // The frames.
@@ -316,7 +327,8 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
         continue;
       }
       const auto c = static_cast<uint32_t>(run.result.outputs[next++].f[0]);
-      px = {static_cast<uint8_t>(c >> 24), static_cast<uint8_t>(c >> 16), static_cast<uint8_t>(c >> 8)};
+      px = {static_cast<uint8_t>(c >> 24), static_cast<uint8_t>(c >> 16),
+            static_cast<uint8_t>(c >> 8)};
     }
     // Cycles: from the previous frame's last sample out to this frame's (its loads included).
     if (next > 0 && next <= run.result.output_cycles.size()) {
@@ -324,7 +336,8 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
       reports[f].cycles = cycle - cycle_before;
       cycle_before = cycle;
     }
-    const std::string png = (fs::path(o.out_dir) / fmt::format("flyover.frame-{:04}.png", reports[f].frame)).string();
+    const std::string png =
+        (fs::path(o.out_dir) / fmt::format("flyover.frame-{:04}.png", reports[f].frame)).string();
     write_image(png, img);
     images.push_back(std::move(img));
   }
@@ -352,7 +365,8 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
                             name(o.level), name(*o.check), reports.size());
     } else {
       status = 1;
-      verdict = fmt::format("MISMATCH: {} of {} samples differ", differing, run.result.outputs.size());
+      verdict =
+          fmt::format("MISMATCH: {} of {} samples differ", differing, run.result.outputs.size());
       for (const std::string& d : uc.differences) verdict += "\n  " + d;
     }
   }
@@ -366,13 +380,16 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
       1 << fo.config.log2_virtual, 1 << fo.config.log2_virtual, 1 << fo.config.log2_tile,
       1 << fo.config.log2_tile, clipped - 1,
       fo.config.substitution == clipmap::Substitution::kPerTap ? "per-tap" : "per-sample");
-  text += "  frame  centre (u, v)       samples  wayward  texels loaded  rows per level          cycles\n";
+  text +=
+      "  frame  centre (u, v)       samples  wayward  texels loaded  rows per level          "
+      "cycles\n";
   uint64_t wayward = 0;
   for (const FrameReport& r : reports) {
     std::string rows;
-    for (int l = 0; l < clipped; ++l) rows += fmt::format("{}{}", l ? " " : "", r.rows[static_cast<size_t>(l)]);
-    text += fmt::format("  {:5}  ({:8.1f}, {:8.1f})  {:7}  {:7}  {:13}  {:22}  {:6}\n", r.frame, r.centre.x,
-                        r.centre.y, r.samples, r.wayward, r.loads, rows, r.cycles);
+    for (int l = 0; l < clipped; ++l)
+      rows += fmt::format("{}{}", l ? " " : "", r.rows[static_cast<size_t>(l)]);
+    text += fmt::format("  {:5}  ({:8.1f}, {:8.1f})  {:7}  {:7}  {:13}  {:22}  {:6}\n", r.frame,
+                        r.centre.x, r.centre.y, r.samples, r.wayward, r.loads, rows, r.cycles);
     wayward += r.wayward;
   }
   text += fmt::format("  unit: {} cycles, {:.2f} s; counters:", run.result.cycles, seconds);
@@ -380,7 +397,8 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
   text += "\n";
   const auto unit_wayward = tb::counter_value(run.result.counters, "wayward_samples");
   if (unit_wayward && *unit_wayward != wayward) {
-    text += fmt::format("  the unit counted {} wayward samples, the plans {}\n", *unit_wayward, wayward);
+    text += fmt::format("  the unit counted {} wayward samples, the plans {}\n", *unit_wayward,
+                        wayward);
     status = 1;
   }
   text += "  host work: the front end (ray casting onto the ground), the tile manager's reads\n";

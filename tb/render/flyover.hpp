@@ -19,10 +19,11 @@
 // (ray differentials), as the rasterizer's rule. The clip-map's tiles are centred on the ground
 // point the camera looks at (the "look" of the path, on the ground): 003 centres them on the
 // eyepoint, where the finest texels are needed; a camera above the ground needs them where it
-// looks, and centring them below it would leave half of every tile behind the camera. One clip-map unit runs the whole frame range: its configuration, then per frame the
-// manager's region writes and loads, then the frame's samples. So a frame after frames 0..k-1
-// is checked bit for bit like any unit, loads included, and a frame rendered alone (the manager
-// from scratch) equals it (docs/clipmap.md).
+// looks, and centring them below it would leave half of every tile behind the camera. One clip-map
+// unit runs the whole frame range: its configuration, then per frame the manager's region writes
+// and loads, then the frame's samples. So a frame after frames 0..k-1 is checked bit for bit like
+// any unit, loads included, and a frame rendered alone (the manager from scratch) equals it
+// (docs/clipmap.md).
 #pragma once
 
 #include <iosfwd>
@@ -41,9 +42,9 @@ struct FrameRange {
 };
 
 // Renders the frames into out_dir: flyover.frame-NNNN.png, flyover.contact.png (every frame),
-// flyover.report.txt (per frame: texels loaded, rows per level, wayward samples, cycles). `check` compares the unit with another engine's (outputs, every read and
-// write, counters) and every pixel. Returns 0, or 1 on a mismatch; throws InputError on bad
-// input.
+// flyover.report.txt (per frame: texels loaded, rows per level, wayward samples, cycles). `check`
+// compares the unit with another engine's (outputs, every read and write, counters) and every
+// pixel. Returns 0, or 1 on a mismatch; throws InputError on bad input.
 int render_flyover(const std::string& scene_path, const RenderOptions& options, FrameRange frames,
                    std::ostream& log);
 
