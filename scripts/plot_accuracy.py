@@ -36,6 +36,11 @@ SPECS = {
         cells=["enc cells", "defl cells", "coord cells"],
         cells_name="cells: encoder + deflection + coordinates", time="cyc/px",
         time_name="cycles per bumped pixel", invert=False),
+    "clipmap": dict(
+        label="tile,rule", default="64 per-sample", error="mean err",
+        error_name="mean error vs every level resident (8-bit levels)", cells=["resident texels"],
+        cells_name="texels resident", time="loads/frame", time_name="texels loaded per frame",
+        invert=False),
     "perlin": dict(
         label="F,S,B,X", default="8,8,8,4", error="P mean", error_name="noise mean error",
         cells=["noise cells"], cells_name="noise unit cells", time="golden ns/sample",
@@ -56,7 +61,8 @@ def points(rows, spec):
     out = []
     for row in rows:
         error, time = number(row[spec["error"]]), number(row[spec["time"]])
-        if error is None or time is None or (spec["invert"] and time == 0):
+        # An error of 0 (every texel resident) has no place on the log scale.
+        if error is None or time is None or error <= 0 or (spec["invert"] and time == 0):
             continue
         cells = None
         if spec["cells"]:

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -26,25 +27,9 @@ namespace {
 using glm::dvec3;
 namespace fs = std::filesystem;
 
-struct Keyframe {
-  int frame = 0;
-  dvec3 eye, look;
-};
+}  // namespace
 
-struct Flyover {
-  std::string path;     // the scene file
-  std::string texture;  // the tiled mipmap (made from "terrain" when the scene asks)
-  int terrain_log2 = 0;
-  uint32_t terrain_seed = 1;
-  clipmap::Config config;
-  int width = 160, height = 120;
-  double fov_degrees = 60;
-  Rgb8 sky{150, 190, 235};
-  std::vector<Keyframe> path_keys;
-  int frames() const { return path_keys.back().frame + 1; }
-};
-
-Flyover parse(const std::string& scene_path, const std::string& out_dir) {
+Flyover load_flyover(const std::string& scene_path, const std::string& out_dir) {
   std::ifstream in(scene_path);
   if (!in) throw InputError(scene_path, "", "cannot read the file");
   std::stringstream text;
@@ -130,6 +115,8 @@ Flyover parse(const std::string& scene_path, const std::string& out_dir) {
   return fo;
 }
 
+namespace {
+
 // The eye and the point looked at in frame `n`: linear between keyframes.
 Keyframe camera_at(const Flyover& fo, int n) {
   const auto& k = fo.path_keys;
@@ -182,14 +169,6 @@ std::vector<Pixel> cast(const Flyover& fo, const Keyframe& cam) {
   }
   return out;
 }
-
-struct FrameReport {
-  int frame = 0;
-  size_t samples = 0, loads = 0, wayward = 0;
-  uint64_t cycles = 0, file_tiles = 0;
-  std::array<uint32_t, clipmap::kMaxLevels> rows{};
-  glm::dvec2 centre;  // the tiles' centre: the ground point looked at
-};
 
 ImageRgb8 contact_sheet(const std::vector<ImageRgb8>& frames) {
   const int n = static_cast<int>(frames.size());
@@ -253,69 +232,56 @@ bool is_flyover(const std::string& scene_path) {
   }
 }
 
-int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameRange range,
-                   std::ostream& log) {
-  if (o.level == Level::kIdeal || (o.check && *o.check == Level::kIdeal)) {
-    throw InputError(scene_path, "flyover", "a fly-over renders at golden, hls or rtl");
-  }
-  const Flyover fo = parse(scene_path, o.out_dir);
-  const int last = range.last < 0 ? fo.frames() - 1 : range.last;
-  if (range.first < 0 || range.first > last || last >= fo.frames()) {
-    throw InputError(
-        "--frames", "",
-        fmt::format("frames {}..{} of a path of {} frames", range.first, last, fo.frames()));
-  }
-  fs::create_directories(o.out_dir);  // only once the scene and the range are good
-  if (fo.terrain_log2 > 0 && !fs::exists(fo.texture)) {
-    log << fmt::format("making the virtual texture {} (texsim terrain --log2 {} --seed {})\n",
-                       fo.texture, fo.terrain_log2, fo.terrain_seed);
-    clipmap::write_terrain_mipmap(fo.texture, fo.terrain_log2, fo.terrain_seed, 64);
-  }
-  clipmap::TileManager manager(fo.config, fo.texture);
+void make_virtual_texture(const Flyover& fo, std::ostream& log) {
+  if (fo.terrain_log2 == 0 || fs::exists(fo.texture)) return;
+  log << fmt::format("making the virtual texture {} (texsim terrain --log2 {} --seed {})\n",
+                     fo.texture, fo.terrain_log2, fo.terrain_seed);
+  fs::create_directories(fs::path(fo.texture).parent_path());
+  clipmap::write_terrain_mipmap(fo.texture, fo.terrain_log2, fo.terrain_seed, 64);
+}
 
+FlyoverRun run_flyover(const Flyover& fo, Level level, int first, int last, int step) {
+  clipmap::TileManager manager(fo.config, fo.texture);
+  FlyoverRun out;
   // The unit's items: the configuration, then per frame the updates and the samples.
   const auto block = std::make_shared<tb::ClipmapBlock>(fo.config);
-  UnitRun run;
+  UnitRun& run = out.unit;
   run.kind = "clipmap";
   run.material = "terrain";
   attach(run, block);
   run.items = block->setup_items();
   std::vector<std::vector<Pixel>> pixels;
-  std::vector<FrameReport> reports;
-  for (int n = range.first; n <= last; ++n) {
+  const clipmap::ClipGeometry g = fo.config.geometry();
+  for (int n = first; n <= last; n += step) {
     const Keyframe cam = camera_at(fo, n);
     FrameReport r;
     r.frame = n;
     r.centre = {cam.look.x, cam.look.y};
     const clipmap::FrameUpdate u = manager.update(r.centre.x, r.centre.y);
-    for (const auto& [level, region] : u.regions)
-      run.items.push_back(tb::clipmap_region_item(level, region));
+    for (const auto& [lv, region] : u.regions)
+      run.items.push_back(tb::clipmap_region_item(lv, region));
     for (const clipmap::Load& l : u.loads) run.items.push_back(tb::clipmap_load_item(l));
     r.loads = u.loads.size();
     r.rows = u.rows;
     r.file_tiles = u.file_tiles_read;
     pixels.push_back(cast(fo, cam));
     const clipmap::Regions regions = clipmap::centred_regions(fo.config, r.centre.x, r.centre.y);
-    const clipmap::ClipGeometry g = fo.config.geometry();
     for (const Pixel& p : pixels.back()) {
       if (!p.ground) continue;
       run.items.push_back(tb::clipmap_sample_item(p.u, p.v, p.lambda));
       ++r.samples;
       // The report's count of wayward samples per frame, from the plan (the unit counts them
-      // over the run: its counter is checked against the sum below).
+      // over the run: its counter is checked against the sum).
       r.wayward +=
           clipmap::plan_clip_sample(g, fo.config, regions, {p.u, p.v, p.lambda, 0}).wayward;
     }
-    reports.push_back(r);
+    out.frames.push_back(r);
   }
   const auto t = std::chrono::steady_clock::now();
-  run_unit(run, o.level, {});
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  run_unit(run, level, {});
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   if (!run.result.error.empty()) throw std::runtime_error("clipmap unit: " + run.result.error);
 
-  // The frames.
-  std::vector<ImageRgb8> images;
   size_t next = 0;
   uint64_t cycle_before = 0;  // the cycle of the previous frame's last sample
   for (size_t f = 0; f < pixels.size(); ++f) {
@@ -333,40 +299,59 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
     // Cycles: from the previous frame's last sample out to this frame's (its loads included).
     if (next > 0 && next <= run.result.output_cycles.size()) {
       const uint64_t cycle = run.result.output_cycles[next - 1];
-      reports[f].cycles = cycle - cycle_before;
+      out.frames[f].cycles = cycle - cycle_before;
       cycle_before = cycle;
     }
-    const std::string png =
-        (fs::path(o.out_dir) / fmt::format("flyover.frame-{:04}.png", reports[f].frame)).string();
-    write_image(png, img);
-    images.push_back(std::move(img));
+    out.images.push_back(std::move(img));
   }
-  write_image((fs::path(o.out_dir) / "flyover.contact.png").string(), contact_sheet(images));
-  {
-    const Keyframe cam = camera_at(fo, last);
-    write_image((fs::path(o.out_dir) / "flyover.tiles.png").string(),
-                tiles_picture(manager, fo.config,
-                              clipmap::centred_regions(fo.config, cam.look.x, cam.look.y)));
+  const Keyframe cam = camera_at(fo, out.frames.back().frame);
+  out.tiles = tiles_picture(manager, fo.config,
+                            clipmap::centred_regions(fo.config, cam.look.x, cam.look.y));
+  return out;
+}
+
+int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameRange range,
+                   std::ostream& log) {
+  if (o.level == Level::kIdeal || (o.check && *o.check == Level::kIdeal)) {
+    throw InputError(scene_path, "flyover", "a fly-over renders at golden, hls or rtl");
   }
+  const Flyover fo = load_flyover(scene_path, o.out_dir);
+  const int last = range.last < 0 ? fo.frames() - 1 : range.last;
+  if (range.first < 0 || range.first > last || last >= fo.frames()) {
+    throw InputError(
+        "--frames", "",
+        fmt::format("frames {}..{} of a path of {} frames", range.first, last, fo.frames()));
+  }
+  fs::create_directories(o.out_dir);  // only once the scene and the range are good
+  make_virtual_texture(fo, log);
+  FlyoverRun run = run_flyover(fo, o.level, range.first, last);
+  for (size_t f = 0; f < run.images.size(); ++f) {
+    write_image((fs::path(o.out_dir) / fmt::format("flyover.frame-{:04}.png", run.frames[f].frame))
+                    .string(),
+                run.images[f]);
+  }
+  write_image((fs::path(o.out_dir) / "flyover.contact.png").string(), contact_sheet(run.images));
+  write_image((fs::path(o.out_dir) / "flyover.tiles.png").string(), run.tiles);
 
   // The check: the same unit at another engine, compared like every unit, and the pixels.
   int status = 0;
   std::string verdict;
   if (o.check) {
-    UnitRun ref = run;
+    UnitRun ref = run.unit;
     ref.result = {};
     run_unit(ref, *o.check, {});
-    const UnitCheck uc = check_units({run}, {ref});
+    const UnitCheck uc = check_units({run.unit}, {ref});
     size_t differing = 0;
-    for (size_t i = 0; i < run.result.outputs.size() && i < ref.result.outputs.size(); ++i)
-      differing += run.result.outputs[i].f[0] != ref.result.outputs[i].f[0];
-    if (uc.match() && differing == 0 && run.result.outputs.size() == ref.result.outputs.size()) {
+    const auto& got = run.unit.result.outputs;
+    const auto& want = ref.result.outputs;
+    for (size_t i = 0; i < got.size() && i < want.size(); ++i)
+      differing += got[i].f[0] != want[i].f[0];
+    if (uc.match() && differing == 0 && got.size() == want.size()) {
       verdict = fmt::format("MATCH: {} = {}, every sample of {} frames, every load and counter",
-                            name(o.level), name(*o.check), reports.size());
+                            name(o.level), name(*o.check), run.frames.size());
     } else {
       status = 1;
-      verdict =
-          fmt::format("MISMATCH: {} of {} samples differ", differing, run.result.outputs.size());
+      verdict = fmt::format("MISMATCH: {} of {} samples differ", differing, got.size());
       for (const std::string& d : uc.differences) verdict += "\n  " + d;
     }
   }
@@ -376,15 +361,15 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
   std::string text = fmt::format(
       "flyover {}: {} frames ({}..{}), {}x{}, engine {}\n  virtual texture {} ({} x {}), tiles of "
       "{} x {} for levels 0..{}, {} substitution\n",
-      scene_path, reports.size(), range.first, last, fo.width, fo.height, name(o.level), fo.texture,
-      1 << fo.config.log2_virtual, 1 << fo.config.log2_virtual, 1 << fo.config.log2_tile,
-      1 << fo.config.log2_tile, clipped - 1,
+      scene_path, run.frames.size(), range.first, last, fo.width, fo.height, name(o.level),
+      fo.texture, 1 << fo.config.log2_virtual, 1 << fo.config.log2_virtual,
+      1 << fo.config.log2_tile, 1 << fo.config.log2_tile, clipped - 1,
       fo.config.substitution == clipmap::Substitution::kPerTap ? "per-tap" : "per-sample");
   text +=
       "  frame  centre (u, v)       samples  wayward  texels loaded  rows per level          "
       "cycles\n";
   uint64_t wayward = 0;
-  for (const FrameReport& r : reports) {
+  for (const FrameReport& r : run.frames) {
     std::string rows;
     for (int l = 0; l < clipped; ++l)
       rows += fmt::format("{}{}", l ? " " : "", r.rows[static_cast<size_t>(l)]);
@@ -392,10 +377,11 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
                         r.centre.x, r.centre.y, r.samples, r.wayward, r.loads, rows, r.cycles);
     wayward += r.wayward;
   }
-  text += fmt::format("  unit: {} cycles, {:.2f} s; counters:", run.result.cycles, seconds);
-  for (const auto& [k, v] : run.result.counters) text += fmt::format(" {} {}", k, v);
+  const tb::RunResult& result = run.unit.result;
+  text += fmt::format("  unit: {} cycles, {:.2f} s; counters:", result.cycles, run.seconds);
+  for (const auto& [k, v] : result.counters) text += fmt::format(" {} {}", k, v);
   text += "\n";
-  const auto unit_wayward = tb::counter_value(run.result.counters, "wayward_samples");
+  const auto unit_wayward = tb::counter_value(result.counters, "wayward_samples");
   if (unit_wayward && *unit_wayward != wayward) {
     text += fmt::format("  the unit counted {} wayward samples, the plans {}\n", *unit_wayward,
                         wayward);

@@ -26,12 +26,61 @@
 // (docs/clipmap.md).
 #pragma once
 
+#include <array>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
+#include "clipmap/clipmap.hpp"
+#include "common/image.hpp"
 #include "render/render.hpp"
+#include "render/units.hpp"
 
 namespace tmu::render {
+
+struct Keyframe {
+  int frame = 0;
+  glm::dvec3 eye, look;
+};
+
+// A fly-over scene, read.
+struct Flyover {
+  std::string path;      // the scene file
+  std::string texture;   // the tiled mipmap (made from "terrain" when the scene asks)
+  int terrain_log2 = 0;  // 0: a given file
+  uint32_t terrain_seed = 1;
+  clipmap::Config config;
+  int width = 160, height = 120;
+  double fov_degrees = 60;
+  Rgb8 sky{150, 190, 235};
+  std::vector<Keyframe> path_keys;
+  int frames() const { return path_keys.back().frame + 1; }
+};
+// Throws InputError naming the file, the field and the reason. A generated terrain goes to
+// `out_dir`.
+Flyover load_flyover(const std::string& scene_path, const std::string& out_dir);
+// Makes the generated virtual texture when it is not there yet (texsim terrain's).
+void make_virtual_texture(const Flyover& flyover, std::ostream& log);
+
+struct FrameReport {
+  int frame = 0;
+  size_t samples = 0, loads = 0, wayward = 0;
+  uint64_t cycles = 0, file_tiles = 0;
+  std::array<uint32_t, clipmap::kMaxLevels> rows{};
+  glm::dvec2 centre;  // the tiles' centre: the ground point looked at
+};
+
+// Frames first, first + step, .. <= last through one clip-map unit at `level`.
+struct FlyoverRun {
+  std::vector<ImageRgb8> images;
+  std::vector<FrameReport> frames;
+  ImageRgb8 tiles;  // the last frame's tiles over the texture
+  UnitRun unit;
+  double seconds = 0;  // the unit's run
+};
+FlyoverRun run_flyover(const Flyover& flyover, Level level, int first, int last, int step = 1);
 
 // Whether the scene file is a fly-over (has a "flyover" section).
 bool is_flyover(const std::string& scene_path);

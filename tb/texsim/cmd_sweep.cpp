@@ -23,6 +23,7 @@
 #include "texram/trilinear_ideal.hpp"
 #include "texsim/commands.hpp"
 #include "texsim/sweep_all.hpp"
+#include "texsim/sweep_clipmap.hpp"
 #include "texsim/sweep_deflection.hpp"
 #include "texsim/sweep_footprint.hpp"
 #include "texsim/sweep_footprint_setup.hpp"
@@ -211,6 +212,11 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       "mipgen: the mipmap generator's rounding (000 §12) per carry: each level's error against "
       "the exact box\n"
       "means of level 0, the carried bits in the line FIFOs, cells (docs/texram.md).\n"
+      "clipmap: the clip-map (003) per tile size and substitution rule on the fly-over: texels "
+      "resident, loaded\n"
+      "per frame, wayward samples, the frames' error against the whole pyramid's; loads against "
+      "speed; rtl = golden,\n"
+      "cycles and cells at the default tile (docs/clipmap.md).\n"
       "all: every sweep above, the model-level table (texsim levels) and the default scene at "
       "every engine, with\n"
       "a plot per block (scripts/plot_accuracy.py): writes DIR/accuracy.md and DIR/accuracy/ "
@@ -223,17 +229,19 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
   auto args = std::make_shared<SweepArgs>();
   auto fp = std::make_shared<FootprintSweepArgs>();
   cmd->add_option("block", args->block,
-                  "trilinear | footprint | footprint-setup | deflection | perlin | mipgen | all")
+                  "trilinear | footprint | footprint-setup | deflection | perlin | mipgen | "
+                  "clipmap | all")
       ->required()
-      ->check(CLI::IsMember(
-          {"trilinear", "footprint", "footprint-setup", "deflection", "perlin", "mipgen", "all"}));
+      ->check(CLI::IsMember({"trilinear", "footprint", "footprint-setup", "deflection", "perlin",
+                             "mipgen", "clipmap", "all"}));
   cmd->add_option("--settings", args->settings,
                   "trilinear: width settings S,W,L separated by ';' (footprint-setup: D,T,F; "
                   "default " +
                       FootprintSetupSweepArgs{}.settings + "; deflection: A,E,M,W, default " +
                       DeflectionSweepArgs{}.settings + "; perlin: F,S,B,X, default " +
                       PerlinSweepArgs{}.settings + "; mipgen: carries 0..20, default " +
-                      MipgenSweepArgs{}.settings + ")")
+                      MipgenSweepArgs{}.settings + "; clipmap: log2 tile sides, default " +
+                      ClipmapSweepArgs{}.settings + ")")
       ->capture_default_str();
   cmd->add_option("--requests", args->requests,
                   "trilinear, footprint-setup: random requests for the error statistics "
@@ -258,12 +266,18 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
                   "per-pixel supersampled footprint)")
       ->check(CLI::Range(1, 16));
   cmd->add_flag("--quick", fp->quick, "footprint: half the frame and k = 4 (for tests)");
+  auto log2_virtual = std::make_shared<int>(ClipmapSweepArgs{}.log2_virtual);
+  cmd->add_option("--log2-virtual", *log2_virtual,
+                  "clipmap: log2 of the terrain's side (up to 10 the frames are also rendered from "
+                  "the whole pyramid for their error; 15 is 003's 32k, a long run)")
+      ->check(CLI::Range(3, 15))
+      ->capture_default_str();
   auto image = std::make_shared<std::string>();
   cmd->add_option("--image", *image,
                   "mipgen: the image whose planes are filtered (sides powers of two up to 1024; "
                   "default the photo-like field, 512 x 512)")
       ->check(CLI::ExistingFile);
-  cmd->callback([args, fp, image, cmd] {
+  cmd->callback([args, fp, image, log2_virtual, cmd] {
     if (args->block != "mipgen" && !image->empty()) {
       throw CLI::ValidationError("--image", "only for `sweep mipgen`");
     }
@@ -325,6 +339,18 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       a.synth = args->synth;
       a.markdown = args->markdown;
       sweep_mipgen(a);
+    } else if (args->block == "clipmap") {
+      for (const char* o : {"--k", "--quick", "--requests"}) {
+        if (cmd->count(o) > 0) throw CLI::ValidationError(o, "not for `sweep clipmap`");
+      }
+      ClipmapSweepArgs a;
+      if (cmd->count("--settings") > 0) a.settings = args->settings;
+      a.log2_virtual = *log2_virtual;
+      a.scene = fp->scene;
+      a.work_dir = args->out_dir;
+      a.synth = args->synth;
+      a.markdown = args->markdown;
+      sweep_clipmap(a);
     } else if (args->block == "footprint") {
       for (const char* o : {"--settings", "--requests", "--no-synth"}) {
         if (cmd->count(o) > 0) throw CLI::ValidationError(o, "only for `sweep trilinear`");
