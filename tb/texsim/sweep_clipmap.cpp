@@ -97,8 +97,8 @@ std::string side_name(int t) { return fmt::format("{}", 1 << t); }
 void sweep_clipmap(const ClipmapSweepArgs& args) {
   const std::string scene =
       args.scene.empty() ? std::string(TMU_SOURCE_DIR) + "/scenes/flyover.json" : args.scene;
-  const fs::path work =
-      args.work_dir.empty() ? fs::temp_directory_path() / "tmu_sweep_clipmap" : fs::path(args.work_dir);
+  const fs::path work = args.work_dir.empty() ? fs::temp_directory_path() / "tmu_sweep_clipmap"
+                                              : fs::path(args.work_dir);
   fs::create_directories(work);
   render::Flyover fo = render::load_flyover(scene, work.string());
   if (fo.terrain_log2 == 0) throw InputError(scene, "flyover", "the sweep generates its terrain");
@@ -132,10 +132,13 @@ void sweep_clipmap(const ClipmapSweepArgs& args) {
       const render::FlyoverRun run = render::run_flyover(s, render::Level::kGolden, 0, last);
       const Residency r = residency(v, t);
       const FrameError e = referenced ? frame_error(run.images, reference) : FrameError{NAN, NAN};
-      table.add({fmt::format("{} {}", side_name(t), rule == Substitution::kPerTap ? "per-tap" : "per-sample"),
-                 fmt::format("{:.0f}", r.resident), fmt::format("{:.2f}", 100 * r.resident / r.full),
-                 fmt::format("{:.1f}", 100 * wayward_share(run)), fmt::format("{:.0f}", mean_loads(run)),
-                 std::isinf(e.psnr) ? "inf" : fmt::format("{:.2f}", e.psnr), fmt::format("{:.3f}", e.mean)});
+      table.add(
+          {fmt::format("{} {}", side_name(t),
+                       rule == Substitution::kPerTap ? "per-tap" : "per-sample"),
+           fmt::format("{:.0f}", r.resident), fmt::format("{:.2f}", 100 * r.resident / r.full),
+           fmt::format("{:.1f}", 100 * wayward_share(run)), fmt::format("{:.0f}", mean_loads(run)),
+           std::isinf(e.psnr) ? "inf" : fmt::format("{:.2f}", e.psnr),
+           fmt::format("{:.3f}", e.mean)});
       fmt::print("  {}\n", table.last_row_text());
     }
   }
@@ -149,17 +152,18 @@ void sweep_clipmap(const ClipmapSweepArgs& args) {
   // Texels loaded per frame against the camera's speed: every k-th frame of the path (the
   // camera k times as fast), at the default tile.
   const int default_tile = fo.config.log2_tile <= v - 1 ? fo.config.log2_tile : tiles.front();
-  SweepTable speed({"speed", Column("loads/frame", Mark::kModel), Column("level-0 rows/frame", Mark::kModel),
-                    Column("wayward %", Mark::kModel)});
+  SweepTable speed({"speed", Column("loads/frame", Mark::kModel),
+                    Column("level-0 rows/frame", Mark::kModel), Column("wayward %", Mark::kModel)});
   for (const int step : {1, 2, 4}) {
     render::Flyover s = fo;
     s.config.log2_tile = default_tile;
     const render::FlyoverRun run = render::run_flyover(s, render::Level::kGolden, 0, last, step);
     double rows = 0;
     for (size_t f = 1; f < run.frames.size(); ++f) rows += run.frames[f].rows[0];
-    speed.add({fmt::format("{}x", step), fmt::format("{:.0f}", mean_loads(run)),
-               fmt::format("{:.1f}", run.frames.size() > 1 ? rows / double(run.frames.size() - 1) : 0),
-               fmt::format("{:.1f}", 100 * wayward_share(run))});
+    speed.add(
+        {fmt::format("{}x", step), fmt::format("{:.0f}", mean_loads(run)),
+         fmt::format("{:.1f}", run.frames.size() > 1 ? rows / double(run.frames.size() - 1) : 0),
+         fmt::format("{:.1f}", 100 * wayward_share(run))});
   }
   speed.print(beside("_speed"));
 

@@ -13,9 +13,9 @@ namespace tmu::texsim {
 
 struct ClipmapSweepArgs {
   std::string settings = "4;5;6;7;8";  // log2 tile sides
-  int log2_virtual = 10;               // the terrain's side; up to 10 the whole pyramid is a reference
-  std::string scene;                   // default scenes/flyover.json
-  std::string work_dir;                // where the terrain and the frames go (default a temporary)
+  int log2_virtual = 10;  // the terrain's side; up to 10 the whole pyramid is a reference
+  std::string scene;      // default scenes/flyover.json
+  std::string work_dir;   // where the terrain and the frames go (default a temporary)
   bool synth = true;
   std::string markdown;  // the tile table; _speed and _hardware beside it
 };
