@@ -24,7 +24,10 @@
 #     depth        logic depth of that netlist: the longest path of gates between flops, RAM
 #                  ports and block ports (Yosys ltp -noff)
 #     yosys_s      wall seconds Yosys took when the figures were made (not when read back)
-#   and, for a block with submodules, the logic cells of each submodule.
+#   and, for a block with submodules, the logic cells of each submodule (--no-submodules leaves
+#   them out: one Yosys run less, what the accuracy sweep asks for). Both netlists take the same
+#   steps to gates, so cells - logic is the memories alone; a block without memories is
+#   synthesized once (logic = cells).
 #   Figures are cached by a content key: the top, the -G parameters, the Yosys version, this
 #   script and every source file the top reads. A cached top prints at once (and says so on
 #   stderr). The cache is $TMU_SYNTH_CACHE, default ${TMU_BUILD_DIR:-build}/synth_cache/.
@@ -45,12 +48,14 @@ bad() { echo "synth.sh: $1 (--help for usage)" >&2; exit 2; }
 
 figures=0
 list=0
+submodules=1
 params=()
 tops=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --figures) figures=1; shift ;;
     --list) list=1; shift ;;
+    --no-submodules) submodules=0; shift ;;
     -G)
       [[ $# -ge 2 && "$2" == [A-Za-z_]*=* ]] || bad "-G needs NAME=VALUE"
       params+=("$2"); shift 2 ;;
@@ -90,7 +95,7 @@ figures_key() {
   files=${read_cmd%%;*}
   files=${files#read_verilog -sv }
   {
-    echo "$top"
+    echo "$top submodules=$submodules"
     printf '%s\n' "${params[@]}"
     yosys -V
     cat "${BASH_SOURCE[0]}"
@@ -109,24 +114,36 @@ figures_top() {
     echo "synth: $top: from cache $entry" >&2
     return 0
   fi
-  # Logic to gates with memories left as $mem cells (the RAM macros of a real chip).
-  local to_logic="opt -full; techmap; opt -fast; abc; opt_clean"
   # Latches are checked right after proc, where an inferred latch is a $dlatch cell.
   if ! yosys -q -l "$work/$top.log" -p "$read_cmd; proc;
-      select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr; tee -q -o $work/$top.mem stat;
-      synth -top $top -flatten; check -assert; tee -q -o $work/$top.full stat;
-      design -reset; $read_cmd; synth -top $top -flatten -run begin:fine; $to_logic;
-      tee -q -o $work/$top.logic stat; tee -q -o $work/$top.ltp ltp -noff" >/dev/null 2>&1; then
-    report_failure "$top" "a latch or a check error"
+      select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr; tee -q -o $work/$top.mem stat" \
+      >/dev/null 2>&1; then
+    report_failure "$top" "a latch"
     return 1
   fi
-  local flops mem_bits depth
-  flops=$(awk '/\$_(S?DFF|DFFE|SDFFE|SDFFCE|ALDFF|DFFSR)/ {n+=$2} END {print n+0}' "$work/$top.full")
+  local mem_bits
   mem_bits=$(awk '/Number of memory bits:/ {n=$5} END {print n+0}' "$work/$top.mem")
+  # The coarse synthesis, then to gates: both netlists take the same steps (abc at full effort),
+  # so cells - logic is the memories and nothing else. Without memories the two are one netlist,
+  # made once (the second run is minutes for the wide multipliers).
+  # synth's own fine steps, with abc at full effort (synth runs abc -fast).
+  local coarse="$read_cmd; synth -top $top -flatten -run begin:fine; opt -fast -full"
+  local to_gates="opt -full; techmap; opt -fast; abc; opt -fast"
+  local depth_of="tee -q -o $work/$top.ltp ltp -noff"
+  local logic_pass="design -reset; $coarse; $to_gates; tee -q -o $work/$top.logic stat; $depth_of"
+  if ((mem_bits == 0)); then logic_pass=$depth_of; fi
+  if ! yosys -q -l "$work/$top.log" -p "$coarse; memory_map; $to_gates; check -assert;
+      tee -q -o $work/$top.full stat; $logic_pass" >/dev/null 2>&1; then
+    report_failure "$top" "a check error"
+    return 1
+  fi
+  ((mem_bits == 0)) && cp "$work/$top.full" "$work/$top.logic"
+  local flops depth
+  flops=$(awk '/\$_(S?DFF|DFFE|SDFFE|SDFFCE|ALDFF|DFFSR)/ {n+=$2} END {print n+0}' "$work/$top.full")
   depth=$(sed -n 's/.*(length=\([0-9]*\)).*/\1/p' "$work/$top.ltp")
   : >"$work/$top.sub"
-  if [[ $(wc -w <<<"$sources") -gt 1 ]]; then  # logic per submodule, hierarchy kept
-    if ! yosys -q -l "$work/$top.log" -p "$read_cmd; synth -top $top -run begin:fine; $to_logic;
+  if ((submodules)) && [[ $(wc -w <<<"$sources") -gt 1 ]]; then  # logic per submodule
+    if ! yosys -q -l "$work/$top.log" -p "$read_cmd; synth -top $top -run begin:fine; opt -fast -full; $to_gates;
         tee -q -o $work/$top.hier stat" >/dev/null 2>&1; then
       report_failure "$top" "the synthesis with hierarchy kept"
       return 1

@@ -34,9 +34,11 @@ default parameters.
 
 The test command does not synthesize: its \`rtl_synth_<top>\` tests (\`scripts/synth.sh TOP\`)
 elaborate each top, fail on a latch and run \`check -assert\` on the flattened netlist after
-\`proc\`, in seconds. These figures come from the full flow (\`synth -flatten\`, then
-\`check -assert\` again; the long test \`rtl_synth_figures\` runs it), cached by content key in
-\`build/synth_cache/\`; \`texsim sweep all\` takes its cells from the same cache.
+\`proc\`, in seconds. These figures come from the full flow (\`synth -flatten\`'s steps with
+abc at full effort, where \`synth\` runs \`abc -fast\`, so that both columns take the same steps and
+cells - logic is the memories alone; then \`check -assert\` again; the long test
+\`rtl_synth_figures\` runs it), cached by content key in \`build/synth_cache/\`; \`texsim sweep
+all\` takes its figures from the same flow (without the per-submodule counts).
 
 | column | meaning |
 |---|---|

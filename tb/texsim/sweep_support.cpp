@@ -148,8 +148,10 @@ SynthFigures synthesize(const std::string& top,
   // scripts/synth.sh --figures keeps every result by its content key (top, parameters, Yosys
   // version, script, sources), so a sweep rerun over unchanged RTL takes its figures from the
   // cache instead of minutes of Yosys; this build's cache is the one its tests and docs use.
-  std::string cmd = fmt::format("TMU_SYNTH_CACHE='{}' '{}/scripts/synth.sh' --figures",
-                                TMU_SYNTH_CACHE_DIR, TMU_SOURCE_DIR);
+  // The sweep reads the top's figures only: no per-submodule synthesis.
+  std::string cmd =
+      fmt::format("TMU_SYNTH_CACHE='{}' '{}/scripts/synth.sh' --figures --no-submodules",
+                  TMU_SYNTH_CACHE_DIR, TMU_SOURCE_DIR);
   for (const auto& [name, value] : params) cmd += fmt::format(" -G {}={}", name, value);
   cmd += " " + top + " 2>&1";
   SynthFigures f{"?", "?", "?"};
