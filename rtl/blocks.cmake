@@ -272,6 +272,16 @@ tmu_mutant(clipmap unreset FILE texram/tmu_clipmap.sv EXPECT x-leak
   TO ""
   WHY "the first two stages' valids keep their initial values through reset (random samples enter)")
 
+# Footprint assembly on a clip-map (000 §10 in front of 003): the footprint unit's setup, marcher
+# and average around tmu_clipmap (`texsim cosim footprint_clip`).
+tmu_block(footprint_clip)
+tmu_mutant(footprint_clip overtake FILE footprint/tmu_footprint_clip.sv
+  FROM "(load_valid_i && idle)" TO "(load_valid_i)"
+  WHY "a load reaches the clip-map while a fragment's probes are still in the setup or the marcher (it overtakes them, and is written again when the port shows ready)")
+tmu_mutant(footprint_clip saturate FILE footprint/tmu_footprint_clip.sv
+  FROM "(cfg_border_u_i == BorderClamp || cfg_border_u_i == BorderColour)" TO "(1'b0)"
+  WHY "a probe beyond the port wraps on a clamp axis of the virtual texture instead of saturating")
+
 # TEXRAM bank address unit (000 §2, Fig. 2), the address logic tmu_mipgen and tmu_trilinear
 # instantiate. Combinational, without a flop: no x-leak mutant (no reset to remove, nothing
 # holds an initial value; the suite's X check still runs, and stays identical).

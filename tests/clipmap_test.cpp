@@ -13,9 +13,11 @@
 #include <random>
 #include <set>
 
+#include "clipmap/clip_footprint.hpp"
 #include "clipmap/clipmap_ideal.hpp"
 #include "clipmap/tile_centre.hpp"
 #include "common/test_patterns.hpp"
+#include "footprint/footprint.hpp"
 #include "texram/texture.hpp"
 #include "texram/trilinear.hpp"
 
@@ -301,6 +303,63 @@ TEST(ClipmapTest, PerTapSubstitutionTakesTheCoarserTexelThatHoldsTheLocation) {
     }
     EXPECT_GT(substituted, 1000) << texram::name(s.kind);
   }
+}
+
+// The footprint marcher on the clip-map (clip_footprint.hpp): where the tiles hold every tap of
+// every probe, the footprint unit's sample on the whole pyramid; elsewhere each probe is
+// substituted on its own: the average of the whole pyramid's samples, each probe at the first
+// level whose tile holds it (per sample), found by this file's own loop.
+TEST(ClipmapFootprintTest, EveryProbeGoesThroughTheClipmapOnItsOwn) {
+  std::mt19937_64 rng(9);
+  const Config c =
+      config_of(TexelKind::kLuminance, Filter::kTrilinear, Border::kWrap, Substitution::kPerSample);
+  const texram::TexramTexture full = full_texture(c.log2_virtual, c.sampler.kind);
+  const footprint::Config setup{4, footprint::QRule::kHeights, {}};
+  int held = 0, mixed = 0;
+  for (int eye = 0; eye < 8; ++eye) {
+    const double eu = static_cast<double>(rng() % 256), ev = static_cast<double>(rng() % 256);
+    const Regions r = centred_regions(c, eu, ev);
+    const ClipMemory m = load_clipmap(c, full, r);
+    for (int i = 0; i < 1500; ++i) {
+      // Near the eye, anisotropic up to 16:1 along u or v, major side up to 96 texels.
+      const double major = std::ldexp(1.0, static_cast<int>(rng() % 7) + 1) * 0.75;
+      const double minor = major / static_cast<double>(1 + rng() % 16);
+      const bool along_u = rng() % 2;
+      footprint::Request q;
+      q.u = static_cast<int32_t>((eu + static_cast<double>(rng() % 64) - 32) * kOne);
+      q.v = static_cast<int32_t>((ev + static_cast<double>(rng() % 64) - 32) * kOne);
+      q.r1u = static_cast<int32_t>((along_u ? major : 0) * kOne);
+      q.r1v = static_cast<int32_t>((along_u ? 0 : major) * kOne);
+      q.r2u = static_cast<int32_t>((along_u ? 0 : minor) * kOne);
+      q.r2v = static_cast<int32_t>((along_u ? minor : 0) * kOne);
+      q.shade = 0xFFFF'FFFFu;
+      std::vector<ClipPlan> plans;
+      const uint32_t got = footprint_sample(m, c, r, setup, q, &plans);
+      const footprint::Plan plan = footprint::plan(q, setup);
+      ASSERT_EQ(plans.size(), size_t{1} << plan.log2_n);
+      std::vector<uint32_t> colours;
+      int wayward = 0;
+      for (int k = 0; k < (1 << plan.log2_n); ++k) {
+        texram::Request probe = footprint::probe(q, plan, k, c.sampler);
+        const texram::LevelChoice plain = texram::choose_levels(8, c.sampler, probe.lambda);
+        const int m_first = first_holding_level(c, r, probe, plain);
+        wayward += m_first > plain.level[0];
+        probe.lambda = std::max(probe.lambda, m_first * kOne);
+        colours.push_back(texram::sample(full, c.sampler, probe));
+      }
+      ASSERT_EQ(got, footprint::average(colours, plan.log2_n))
+          << "eye (" << eu << ", " << ev << ") fragment " << q.u << ", " << q.v << " r1 " << q.r1u
+          << ", " << q.r1v << " r2 " << q.r2u << ", " << q.r2v;
+      if (wayward == 0) {
+        ASSERT_EQ(got, footprint::sample(full, c.sampler, setup, q));
+        ++held;
+      } else if (wayward < (1 << plan.log2_n)) {
+        ++mixed;
+      }
+    }
+  }
+  EXPECT_GT(held, 2000);
+  EXPECT_GT(mixed, 200);  // fragments whose far probes alone were substituted
 }
 
 TEST(ClipmapTest, LoadsWriteTheirTexelToroidallyAndEveryReplica) {

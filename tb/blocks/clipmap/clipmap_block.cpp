@@ -57,98 +57,21 @@ texram::Request request_of(const Txn& t) {
           sign_extend(t.f[D::req_lambda], fmts::kLod), static_cast<uint32_t>(t.f[D::req_shade])};
 }
 
-// The golden unit over a run: a configuration item clears the memory to the new clip-map (the
-// CLUT, the regions and the pages stay, as in the RTL and the memory); every read and write is a
-// request on the memory port, in order.
-class Golden : public Model {
- public:
-  void configure(const Txn& cfg) override {
-    config_ = clipmap_config_of(cfg);
-    memory_.emplace(config_.geometry());
-    memory_->clut = clut_;
-  }
-  void step(const Txn& item, Sink& sink) override {
-    if (!memory_) throw std::runtime_error("clipmap: an item before the configuration");
-    switch (item.f[0]) {
-      case D::op_clut: {
-        const auto i = static_cast<uint8_t>(item.f[D::clut_addr]);
-        clut_[i] = memory_->clut[i] = static_cast<uint32_t>(item.f[D::clut_rgba]);
-        written_.set(i);
-        return;
-      }
-      case D::op_region: {
-        const auto level = static_cast<size_t>(item.f[D::region_level]);
-        if (level < regions_.size()) {
-          regions_[level] = {static_cast<uint32_t>(item.f[D::region_x0]),
-                             static_cast<uint32_t>(item.f[D::region_y0]),
-                             static_cast<uint32_t>(item.f[D::region_x1]),
-                             static_cast<uint32_t>(item.f[D::region_y1])};
-        }
-        return;
-      }
-      case D::op_load: {
-        const clipmap::Load load{
-            static_cast<int>(item.f[D::load_level]), static_cast<uint32_t>(item.f[D::load_x]),
-            static_cast<uint32_t>(item.f[D::load_y]), static_cast<uint32_t>(item.f[D::load_texel])};
-        int plane = 0;
-        for (const clipmap::BankAccess& a : clipmap::load_writes(memory_->geometry, load)) {
-          sink.request(0, clip_access_request(a, true, plane++));
-          pages_.access(cells_of(a));
-          clipmap::write(memory_->banks, a);
-        }
-        return;
-      }
-      default:
-        break;
-    }
-    if (config_.sampler.kind == TexelKind::kIndex && !written_.all()) {
-      throw std::runtime_error(
-          "clipmap: a sample of an index texture before all 256 CLUT entries are written (the "
-          "CLUT is a RAM without reset: load it first)");
-    }
+// The golden unit: a request is one clip-map sample.
+class Golden : public ClipGolden<D> {
+  void serve(const Txn& item, Sink& sink) override {
     clipmap::ClipPlan plan;
-    const uint32_t rgba = clipmap::sample(*memory_, config_, regions_, request_of(item), &plan);
-    int plane = 0;
-    for (const clipmap::BankAccess& a : clipmap::read_accesses(plan)) {
-      sink.request(0, clip_access_request(a, false, plane++));
-      pages_.access(cells_of(a));
-    }
-    wayward_ += plan.wayward;
-    substituted_ += static_cast<uint64_t>(plan.substituted_taps);
-    conflicts_ += static_cast<uint64_t>(plan.conflicts);
+    const uint32_t rgba = clipmap::sample(memory(), config(), regions(), request_of(item), &plan);
+    read(plan, sink);
     Txn out;
     out.f[D::out_rgba] = rgba;
     sink.output(out);
   }
-  Counters counters() const override {
-    Counters c = {{"wayward_samples", wayward_ & 0xFFFF'FFFFu},
-                  {"substituted_taps", substituted_ & 0xFFFF'FFFFu},
-                  {"conflicts", conflicts_ & 0xFFFF'FFFFu}};
-    for (const auto& p : page_counters(pages_.stats())) c.push_back(p);
-    return c;
-  }
-
- private:
-  static BankCells cells_of(const clipmap::BankAccess& a) {
-    BankCells cells;
-    for (size_t b = 0; b < 8; ++b) {
-      if ((a.enable >> b) & 1) cells[b] = a.address[b];
-    }
-    return cells;
-  }
-  clipmap::Config config_;
-  std::optional<clipmap::ClipMemory> memory_;
-  clipmap::Regions regions_{};  // empty after reset: everything from the whole levels
-  texram::Clut32 clut_{};
-  std::bitset<256> written_;
-  texram::PageModel pages_;
-  uint64_t wayward_ = 0, substituted_ = 0, conflicts_ = 0;
 };
 
-// An environment drawn from the generator: a small clip-map (the loads of a whole one fit a
-// batch), every kind but CCC, filter, border modes, combine and substitution rule; the eye
-// anywhere in the virtual texture and a little beyond.
-ClipSetup draw_setup(std::mt19937_64& rng) {
+}  // namespace
+
+ClipSetup draw_clip_setup(std::mt19937_64& rng) {
   ClipSetup s;
   clipmap::Config& c = s.config;
   c.log2_virtual = static_cast<int>(uniform(rng, 3, 8));
@@ -171,6 +94,8 @@ ClipSetup draw_setup(std::mt19937_64& rng) {
   return s;
 }
 
+namespace {
+
 // A sample near the eye: within two tiles of it, lambda from magnification to beyond the
 // clipped levels.
 Txn near_eye_sample(std::mt19937_64& rng, const ClipSetup& s) {
@@ -189,55 +114,10 @@ Txn near_eye_sample(std::mt19937_64& rng, const ClipSetup& s) {
 
 // ---- Items -------------------------------------------------------------------------------
 
-Txn clipmap_cfg_item(const clipmap::Config& c) {
-  const texram::SamplerConfig& s = c.sampler;
-  return channel_item(
-      D::table(), "cfg",
-      {uint64_t(c.log2_virtual), uint64_t(c.log2_tile), uint64_t(s.kind),
-       uint64_t(s.single_channel), uint64_t(s.filter), uint64_t(s.border_u), uint64_t(s.border_v),
-       s.border_rgba, uint64_t(s.combine), s.constant_rgba, uint64_t(c.substitution)});
-}
-
-clipmap::Config clipmap_config_of(const Txn& t) {
-  clipmap::Config c;
-  c.log2_virtual = static_cast<int>(t.f[D::cfg_log2_virtual]);
-  c.log2_tile = static_cast<int>(t.f[D::cfg_log2_tile]);
-  texram::SamplerConfig& s = c.sampler;
-  s.kind = static_cast<TexelKind>(t.f[D::cfg_kind]);
-  s.single_channel = static_cast<int>(t.f[D::cfg_single_channel]);
-  s.filter = static_cast<Filter>(t.f[D::cfg_filter]);
-  s.border_u = static_cast<Border>(t.f[D::cfg_border_u]);
-  s.border_v = static_cast<Border>(t.f[D::cfg_border_v]);
-  s.border_rgba = static_cast<uint32_t>(t.f[D::cfg_border_rgba]);
-  s.combine = static_cast<texram::Combine>(t.f[D::cfg_combine]);
-  s.constant_rgba = static_cast<uint32_t>(t.f[D::cfg_constant_rgba]);
-  c.substitution = static_cast<Substitution>(t.f[D::cfg_substitution]);
-  if (t.f[D::cfg_kind] > uint64_t(TexelKind::kSingle) ||
-      t.f[D::cfg_filter] > uint64_t(Filter::kTrilinear) ||
-      t.f[D::cfg_combine] > uint64_t(texram::Combine::kShade)) {
-    throw std::invalid_argument("clipmap: a configuration item outside the encodings: " +
-                                D::table().inputs().describe(t));
-  }
-  clipmap::check(c);  // sizes: names what is wrong
-  return c;
-}
-
 Txn clipmap_sample_item(int32_t u_raw, int32_t v_raw, int32_t lambda_raw, uint32_t shade) {
   return channel_item(D::table(), "req",
                       {static_cast<uint32_t>(u_raw), static_cast<uint32_t>(v_raw),
                        static_cast<uint32_t>(lambda_raw), shade});
-}
-
-Txn clipmap_clut_item(uint8_t index, uint32_t rgba) {
-  return channel_item(D::table(), "clut", {index, rgba});
-}
-
-Txn clipmap_region_item(int level, const clipmap::Region& r) {
-  return channel_item(D::table(), "region", {uint64_t(level), r.x0, r.y0, r.x1, r.y1});
-}
-
-Txn clipmap_load_item(const clipmap::Load& l) {
-  return channel_item(D::table(), "load", {uint64_t(l.level), l.x, l.y, l.texel});
 }
 
 uint32_t clipmap_texel(uint32_t content, int level, uint32_t x, uint32_t y) {
@@ -247,29 +127,11 @@ uint32_t clipmap_texel(uint32_t content, int level, uint32_t x, uint32_t y) {
   return static_cast<uint32_t>(z ^ (z >> 31));
 }
 
-std::vector<Txn> clipmap_fill_items(const ClipSetup& s, TexelOf texel_of) {
-  std::vector<Txn> items;
-  const clipmap::Config& c = s.config;
-  const clipmap::ClipGeometry g = c.geometry();
-  for (int l = 0; l < g.levels(); ++l) {
-    const bool clipped = l < c.clipped_levels();
-    const clipmap::Region r = clipped ? clipmap::centred_region(c, l, s.eye_u, s.eye_v)
-                                      : clipmap::Region{0, 0, g.virtual_side(l), g.virtual_side(l)};
-    if (clipped) items.push_back(clipmap_region_item(l, r));
-    for (uint32_t y = r.y0; y < r.y1; ++y) {
-      for (uint32_t x = r.x0; x < r.x1; ++x) {
-        items.push_back(clipmap_load_item({l, x, y, texel_of(s.content, l, x, y)}));
-      }
-    }
-  }
-  return items;
-}
-
 // ---- The block ---------------------------------------------------------------------------
 
 ClipmapBlock::ClipmapBlock(const BlockOptions& options) : DescribedBlockOf(D::table()) {
   std::mt19937_64 rng(options.seed);
-  first_ = draw_setup(rng);
+  first_ = draw_clip_setup(rng);
   add_level("hls", hls_level<desc::clipmap_sc, hls::ClipmapSc>());
   TMU_ADD_RTL_LEVELS(clipmap, variant());
 }
@@ -416,7 +278,7 @@ std::vector<Txn> ClipmapBlock::random_items(std::mt19937_64& rng, size_t count) 
   while (items.size() < count) {
     if (items.size() >= next_batch) {  // a new environment, as a driver between batches
       next_batch += kBatch;
-      s = draw_setup(rng);
+      s = draw_clip_setup(rng);
       for (const Txn& t : environment_items(s)) items.push_back(t);
       continue;
     }

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "blocks/clipmap/clip_items.hpp"
 #include "blocks/clipmap/clipmap_ports.hpp"
 #include "blocks/registry.hpp"
 #include "clipmap/clipmap.hpp"
@@ -37,13 +38,6 @@
 TMU_DESCRIBE(clipmap)
 
 namespace tmu::tb {
-
-// One environment: the configuration, the content seed and where the eye is (level-0 texels).
-struct ClipSetup {
-  clipmap::Config config;
-  uint32_t content = 0;
-  double eye_u = 0, eye_v = 0;
-};
 
 class ClipmapBlock : public DescribedBlockOf<ClipmapBlock> {
  public:
@@ -69,20 +63,31 @@ class ClipmapBlock : public DescribedBlockOf<ClipmapBlock> {
   mutable clipmap::Regions cover_regions_{};
 };
 
-// ---- Items: raw port values ---------------------------------------------------------------
+// An environment drawn from the generator: a small clip-map (the loads of a whole one fit a
+// batch), every kind but CCC, filter, border modes, combine and substitution rule; the eye
+// anywhere in the virtual texture and a little beyond.
+ClipSetup draw_clip_setup(std::mt19937_64& rng);
 
-Txn clipmap_cfg_item(const clipmap::Config& config);
-clipmap::Config clipmap_config_of(const Txn& cfg);
+// ---- Items: raw port values (clip_items.hpp's, for this block) ----------------------------
+
+inline Txn clipmap_cfg_item(const clipmap::Config& config) {
+  return clip_cfg_item<desc::clipmap>(config);
+}
+inline clipmap::Config clipmap_config_of(const Txn& cfg) {
+  return clip_config_of<desc::clipmap>(cfg);
+}
 Txn clipmap_sample_item(int32_t u_raw, int32_t v_raw, int32_t lambda_raw, uint32_t shade = 0);
-Txn clipmap_clut_item(uint8_t index, uint32_t rgba);
-Txn clipmap_region_item(int level, const clipmap::Region& region);
-Txn clipmap_load_item(const clipmap::Load& load);
-// The region writes and loads that bring a clip-map to the eye (every clipped level's centred
-// tile, texel_of(level, x, y) for each of its texels and every whole level's): what the tile
-// manager issues for a frame from scratch.
-using TexelOf = uint32_t (*)(uint32_t content, int level, uint32_t x, uint32_t y);
-std::vector<Txn> clipmap_fill_items(const ClipSetup& setup, TexelOf texel_of);
-// The environment's texel: a hash of the seed, the level and the coordinates.
-uint32_t clipmap_texel(uint32_t content, int level, uint32_t x, uint32_t y);
+inline Txn clipmap_clut_item(uint8_t index, uint32_t rgba) {
+  return clip_clut_item<desc::clipmap>(index, rgba);
+}
+inline Txn clipmap_region_item(int level, const clipmap::Region& region) {
+  return clip_region_item<desc::clipmap>(level, region);
+}
+inline Txn clipmap_load_item(const clipmap::Load& load) {
+  return clip_load_item<desc::clipmap>(load);
+}
+inline std::vector<Txn> clipmap_fill_items(const ClipSetup& setup, TexelOf texel_of) {
+  return clip_fill_items<desc::clipmap>(setup, texel_of);
+}
 
 }  // namespace tmu::tb
