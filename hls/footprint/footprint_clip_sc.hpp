@@ -277,8 +277,9 @@ class FootprintClipSc : public sc_core::sc_module {
   sc_core::sc_signal<bool> clip_region_valid_{"clip_region_valid"},
       clip_region_ready_{"clip_region_ready"};
   sig<fmts::kMipLevel.width()> clip_region_level_{"clip_region_level"};
-  sig<fmts::kClipBound.width()> clip_region_x0_{"clip_region_x0"}, clip_region_y0_{"clip_region_y0"},
-      clip_region_x1_{"clip_region_x1"}, clip_region_y1_{"clip_region_y1"};
+  sig<fmts::kClipBound.width()> clip_region_x0_{"clip_region_x0"},
+      clip_region_y0_{"clip_region_y0"}, clip_region_x1_{"clip_region_x1"},
+      clip_region_y1_{"clip_region_y1"};
   sc_core::sc_signal<bool> clip_load_valid_{"clip_load_valid"}, clip_load_ready_{"clip_load_ready"};
   sig<fmts::kMipLevel.width()> clip_load_level_{"clip_load_level"};
   sig<fmts::kClipCoord.width()> clip_load_x_{"clip_load_x"}, clip_load_y_{"clip_load_y"};

@@ -37,12 +37,11 @@ using TexelOf = uint32_t (*)(uint32_t content, int level, uint32_t x, uint32_t y
 template <class D, class... Extra>
 Txn clip_cfg_item(const clipmap::Config& c, Extra... extra) {
   const texram::SamplerConfig& s = c.sampler;
-  return channel_item(
-      D::table(), "cfg",
-      {uint64_t(c.log2_virtual), uint64_t(c.log2_tile), uint64_t(s.kind),
-       uint64_t(s.single_channel), uint64_t(s.filter), uint64_t(s.border_u), uint64_t(s.border_v),
-       s.border_rgba, uint64_t(s.combine), s.constant_rgba, uint64_t(c.substitution),
-       uint64_t(extra)...});
+  return channel_item(D::table(), "cfg",
+                      {uint64_t(c.log2_virtual), uint64_t(c.log2_tile), uint64_t(s.kind),
+                       uint64_t(s.single_channel), uint64_t(s.filter), uint64_t(s.border_u),
+                       uint64_t(s.border_v), s.border_rgba, uint64_t(s.combine), s.constant_rgba,
+                       uint64_t(c.substitution), uint64_t(extra)...});
 }
 
 template <class D>
@@ -78,8 +77,9 @@ clipmap::Config clip_config_of(const Txn& t) {
   if (t.f[D::cfg_kind] > uint64_t(texram::TexelKind::kSingle) ||
       t.f[D::cfg_filter] > uint64_t(texram::Filter::kTrilinear) ||
       t.f[D::cfg_combine] > uint64_t(texram::Combine::kShade)) {
-    throw std::invalid_argument(D::table().block() + ": a configuration item outside the encodings: " +
-                                D::table().inputs().describe(t));
+    throw std::invalid_argument(
+        D::table().block() +
+        ": a configuration item outside the encodings: " + D::table().inputs().describe(t));
   }
   clipmap::check(c);  // sizes: names what is wrong
   return c;
@@ -120,7 +120,8 @@ class ClipGolden : public Model {
     memory_->clut = clut_;
   }
   void step(const Txn& item, Sink& sink) override {
-    if (!memory_) throw std::runtime_error(D::table().block() + ": an item before the configuration");
+    if (!memory_)
+      throw std::runtime_error(D::table().block() + ": an item before the configuration");
     if (item.f[0] == D::op_clut) {
       const auto i = static_cast<uint8_t>(item.f[D::clut_addr]);
       clut_[i] = memory_->clut[i] = static_cast<uint32_t>(item.f[D::clut_rgba]);
@@ -128,9 +129,10 @@ class ClipGolden : public Model {
     } else if (item.f[0] == D::op_region) {
       const auto level = static_cast<size_t>(item.f[D::region_level]);
       if (level < regions_.size()) {
-        regions_[level] = {
-            static_cast<uint32_t>(item.f[D::region_x0]), static_cast<uint32_t>(item.f[D::region_y0]),
-            static_cast<uint32_t>(item.f[D::region_x1]), static_cast<uint32_t>(item.f[D::region_y1])};
+        regions_[level] = {static_cast<uint32_t>(item.f[D::region_x0]),
+                           static_cast<uint32_t>(item.f[D::region_y0]),
+                           static_cast<uint32_t>(item.f[D::region_x1]),
+                           static_cast<uint32_t>(item.f[D::region_y1])};
       }
     } else if (item.f[0] == D::op_load) {
       const clipmap::Load load{

@@ -167,17 +167,16 @@ std::vector<Txn> FootprintClipBlock::directed_fragments(const FootprintClipSetup
   uint32_t shade = 0x8040'20FFu;
   for (int l = 0; l <= c.clipped_levels(); ++l) {
     const double major = std::ldexp(1.0, c.log2_tile + l);  // a tile of level l, in level 0
-    const clipmap::Region r =
-        clipmap::centred_region(c, std::min(l, std::max(0, c.clipped_levels() - 1)),
-                                s.clip.eye_u, s.clip.eye_v);
+    const clipmap::Region r = clipmap::centred_region(
+        c, std::min(l, std::max(0, c.clipped_levels() - 1)), s.clip.eye_u, s.clip.eye_v);
     const double edge_u = r.x1 * std::ldexp(1.0, l);
     for (const auto& [du, dv] : {std::pair{1.0, 0.0}, {0.0, 1.0}, {0.7071, 0.7071}, {-1.0, 0.0}}) {
       for (const double minor : {1.0, major / 10}) {
         for (const double cu : {s.clip.eye_u, edge_u}) {
           const auto raw = [](double x) { return std::llround(x * kOne); };
-          items.push_back(footprint_clip_item(fragments::fragment(
-              raw(cu), raw(s.clip.eye_v), raw(major * du), raw(major * dv), raw(-minor * dv),
-              raw(minor * du), shade)));
+          items.push_back(footprint_clip_item(
+              fragments::fragment(raw(cu), raw(s.clip.eye_v), raw(major * du), raw(major * dv),
+                                  raw(-minor * dv), raw(minor * du), shade)));
           shade = shade * 0x9E37'79B9u + 1;
         }
       }
@@ -216,10 +215,9 @@ std::vector<Txn> FootprintClipBlock::directed_items() const {
                              {6, 3, Border::kBorder, Substitution::kPerSample, 1.0, 0.0},
                              {15, 2, Border::kWrap, Substitution::kPerSample, 0.999, 0.5},
                              {15, 2, Border::kClamp, Substitution::kPerTap, 0.5, 0.999}};
-  constexpr texram::TexelKind kTourKinds[] = {texram::TexelKind::kLuminance,
-                                              texram::TexelKind::kIndex,
-                                              texram::TexelKind::kTrueColour,
-                                              texram::TexelKind::kSingle};
+  constexpr texram::TexelKind kTourKinds[] = {
+      texram::TexelKind::kLuminance, texram::TexelKind::kIndex, texram::TexelKind::kTrueColour,
+      texram::TexelKind::kSingle};
   size_t n = 0;
   for (const Tour& t : kTours) {
     FootprintClipSetup s = first_;
@@ -258,9 +256,9 @@ std::vector<Txn> FootprintClipBlock::random_items(std::mt19937_64& rng, size_t c
       s.clip.eye_v += static_cast<double>(static_cast<int64_t>(rng() % 81) - 40) / 4;
       for (const Txn& t : clip_fill_items<D>(s.clip, clipmap_texel)) items.push_back(t);
     } else if (r < 6) {  // a load between fragments
-      items.push_back(clip_load_item<D>({static_cast<int>(rng() % 4), static_cast<uint32_t>(rng() % 300),
-                                         static_cast<uint32_t>(rng() % 300),
-                                         static_cast<uint32_t>(rng())}));
+      items.push_back(
+          clip_load_item<D>({static_cast<int>(rng() % 4), static_cast<uint32_t>(rng() % 300),
+                             static_cast<uint32_t>(rng() % 300), static_cast<uint32_t>(rng())}));
     } else if (r < 400) {  // anywhere over the virtual texture and around it
       items.push_back(footprint_clip_item(fragments::random(rng, side * kOne, side * kOne)));
     } else {
@@ -298,8 +296,8 @@ constexpr const char* kLargest = "virtual texture of 32k";
 
 std::vector<std::string> FootprintClipBlock::coverage_cases() const {
   std::vector<std::string> cases(std::begin(kKinds), std::end(kKinds));
-  cases.insert(cases.end(),
-               {kMixed, kAllWayward, kAllHeld, kPerTap, kPerSample, kSixteen, kAfterWrite, kLargest});
+  cases.insert(cases.end(), {kMixed, kAllWayward, kAllHeld, kPerTap, kPerSample, kSixteen,
+                             kAfterWrite, kLargest});
   return cases;
 }
 
