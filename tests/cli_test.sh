@@ -140,6 +140,12 @@ expect "truncated scene names the file" 2 "cut.json" -- "$texsim" render cut.jso
 sed 's/"eye": \[600, 600, 60\]/"eye": [600, 600, -1]/' "$root/scenes/flyover.json" >under.json
 expect "a fly-over's eye under the ground names the keyframe" 2 "under.json: flyover.path\[0\].eye" -- \
   "$texsim" render under.json --out rx
+sed 's/"filter": "trilinear"/"filter": "footprint", "max_probes": 6/' "$root/scenes/flyover.json" >probes.json
+expect "a fly-over's probe count that is not a power of two" 2 "probes.json: flyover.max_probes" -- \
+  "$texsim" render probes.json --out rx
+sed 's/"filter": "trilinear"/"filter": "trilinear", "max_probes": 8/' "$root/scenes/flyover.json" >probes2.json
+expect "max_probes without the footprint filter" 2 'probes2.json: flyover.max_probes.*footprint' -- \
+  "$texsim" render probes2.json --out rx
 expect "fly-over frames beyond the path" 2 "frames 5..40 of a path of 12" -- \
   "$texsim" render "$root/scenes/flyover.json" --frames 5-40 --out rx
 expect "a fly-over has no ideal render" 2 "golden, hls or rtl" -- \

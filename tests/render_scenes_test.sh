@@ -33,6 +33,16 @@ for scene in "${scenes[@]}"; do
       echo "FAIL $name: frame 3 alone differs from frame 3 after frames 0..2"
       failures=$((failures + 1))
     fi
+    # The footprint unit on the clip-map (filter "footprint", tmu_footprint_clip): frame 3 at rtl,
+    # every fragment, probe, load and counter checked against golden.
+    sed 's/"filter": "[a-z]*"/"filter": "footprint", "max_probes": 8/' "$scene" >"$alone/fp.json"
+    if out=$("$texsim" render "$alone/fp.json" --engine rtl --check golden --frames 3 \
+      --out "$alone" --no-progress 2>&1) && grep -q "footprint unit" <<<"$out"; then
+      echo "ok   $name: filter footprint, frame 3 ($(grep -oE "MATCH[^,]*" <<<"$out" | head -1))"
+    else
+      echo "FAIL $name: filter footprint"; echo "$out" | tail -15
+      failures=$((failures + 1))
+    fi
   fi
 done
 finish

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "blocks/clipmap/clipmap_block.hpp"
+#include "blocks/footprint_clip/footprint_clip_block.hpp"
 #include "clipmap/terrain.hpp"
 #include "clipmap/tile_centre.hpp"
 #include "clipmap/tile_manager.hpp"
@@ -39,8 +40,8 @@ Flyover load_flyover(const std::string& scene_path, const std::string& out_dir) 
   root.expect_object();
   root.allow_keys({"flyover"});
   const host::JsonNode f = root.at("flyover");
-  f.allow_keys({"terrain", "file", "tile_log2", "substitution", "kind", "filter", "border", "frame",
-                "fov_degrees", "sky", "path"});
+  f.allow_keys({"terrain", "file", "tile_log2", "substitution", "kind", "filter", "max_probes",
+                "border", "frame", "fov_degrees", "sky", "path"});
   Flyover fo;
   fo.path = scene_path;
   clipmap::Config& c = fo.config;
@@ -72,7 +73,16 @@ Flyover load_flyover(const std::string& scene_path, const std::string& out_dir) 
                                                                 : texram::TexelKind::kLuminance;
   }
   if (const auto k = f.find("filter")) {
-    c.sampler.filter = *texram::parse_filter(k->one_of({"nearest", "bilinear", "trilinear"}));
+    const std::string filter = k->one_of({"nearest", "bilinear", "trilinear", "footprint"});
+    fo.footprint = filter == "footprint";
+    c.sampler.filter = *texram::parse_filter(fo.footprint ? "trilinear" : filter);
+  }
+  fo.setup.log2_max_probes = 3;
+  if (const auto m = f.find("max_probes")) {
+    if (!fo.footprint) m->fail("max_probes is for filter \"footprint\"");
+    const int64_t n = m->integer(1, 1 << formats::kMaxProbeLog2);
+    if ((n & (n - 1)) != 0) m->fail("expected a power of two, 1..16");
+    fo.setup.log2_max_probes = std::countr_zero(static_cast<uint64_t>(n));
   }
   if (const auto b = f.find("border")) {
     c.sampler.border_u = c.sampler.border_v =
@@ -132,7 +142,8 @@ Keyframe camera_at(const Flyover& fo, int n) {
 // One pixel's sample: where its ray meets the ground, or the sky.
 struct Pixel {
   bool ground = false;
-  int32_t u = 0, v = 0, lambda = 0;  // TexCoord, TexCoord, Lod raw
+  int32_t u = 0, v = 0, lambda = 0;            // TexCoord, TexCoord, Lod raw
+  int32_t r1u = 0, r1v = 0, r2u = 0, r2v = 0;  // d(u, v)/dx and d(u, v)/dy, TexDeriv raw
 };
 
 // The frame's pixels by ray casting onto z = 0, with (u, v) in level-0 texels and lambda the
@@ -162,9 +173,15 @@ std::vector<Pixel> cast(const Flyover& fo, const Keyframe& cam) {
       if (!hit(x + 0.5, y + 0.5, &uv) || !hit(x + 1.5, y + 0.5, &ux) || !hit(x + 0.5, y + 1.5, &uy))
         continue;
       const double len = std::max({glm::length(ux - uv), glm::length(uy - uv), 1e-6});
-      out[static_cast<size_t>(y) * fo.width + x] = {true, raw(uv.x, formats::kTexCoord),
+      const auto deriv = [&](double d) { return raw(d, formats::kTexDeriv); };
+      out[static_cast<size_t>(y) * fo.width + x] = {true,
+                                                    raw(uv.x, formats::kTexCoord),
                                                     raw(uv.y, formats::kTexCoord),
-                                                    raw(std::log2(len), formats::kLod)};
+                                                    raw(std::log2(len), formats::kLod),
+                                                    deriv(ux.x - uv.x),
+                                                    deriv(ux.y - uv.y),
+                                                    deriv(uy.x - uv.x),
+                                                    deriv(uy.y - uv.y)};
     }
   }
   return out;
@@ -243,10 +260,20 @@ void make_virtual_texture(const Flyover& fo, std::ostream& log) {
 FlyoverRun run_flyover(const Flyover& fo, Level level, int first, int last, int step) {
   clipmap::TileManager manager(fo.config, fo.texture);
   FlyoverRun out;
-  // The unit's items: the configuration, then per frame the updates and the samples.
-  const auto block = std::make_shared<tb::ClipmapBlock>(fo.config);
+  // The unit's items: the configuration, then per frame the updates and the samples (pixels,
+  // or fragments of the footprint unit, whose probes the clip-map counts as samples).
+  std::shared_ptr<tb::DescribedBlock> block;
+  if (fo.footprint) {
+    block = std::make_shared<tb::FootprintClipBlock>(fo.config, fo.setup);
+  } else {
+    block = std::make_shared<tb::ClipmapBlock>(fo.config);
+  }
+  const auto region_item = fo.footprint ? tb::clip_region_item<tb::desc::footprint_clip>
+                                        : tb::clip_region_item<tb::desc::clipmap>;
+  const auto load_item = fo.footprint ? tb::clip_load_item<tb::desc::footprint_clip>
+                                      : tb::clip_load_item<tb::desc::clipmap>;
   UnitRun& run = out.unit;
-  run.kind = "clipmap";
+  run.kind = fo.footprint ? "footprint_clip" : "clipmap";
   run.material = "terrain";
   attach(run, block);
   run.items = block->setup_items();
@@ -258,22 +285,31 @@ FlyoverRun run_flyover(const Flyover& fo, Level level, int first, int last, int 
     r.frame = n;
     r.centre = {cam.look.x, cam.look.y};
     const clipmap::FrameUpdate u = manager.update(r.centre.x, r.centre.y);
-    for (const auto& [lv, region] : u.regions)
-      run.items.push_back(tb::clipmap_region_item(lv, region));
-    for (const clipmap::Load& l : u.loads) run.items.push_back(tb::clipmap_load_item(l));
+    for (const auto& [lv, region] : u.regions) run.items.push_back(region_item(lv, region));
+    for (const clipmap::Load& l : u.loads) run.items.push_back(load_item(l));
     r.loads = u.loads.size();
     r.rows = u.rows;
     r.file_tiles = u.file_tiles_read;
     pixels.push_back(cast(fo, cam));
     const clipmap::Regions regions = clipmap::centred_regions(fo.config, r.centre.x, r.centre.y);
+    // The report's count of wayward samples per frame, from the plans (the unit counts them over
+    // the run: its counter is checked against the sum).
+    const auto wayward = [&](const texram::Request& q) {
+      return clipmap::plan_clip_sample(g, fo.config, regions, q).wayward;
+    };
     for (const Pixel& p : pixels.back()) {
       if (!p.ground) continue;
-      run.items.push_back(tb::clipmap_sample_item(p.u, p.v, p.lambda));
       ++r.samples;
-      // The report's count of wayward samples per frame, from the plan (the unit counts them
-      // over the run: its counter is checked against the sum).
-      r.wayward +=
-          clipmap::plan_clip_sample(g, fo.config, regions, {p.u, p.v, p.lambda, 0}).wayward;
+      if (!fo.footprint) {
+        run.items.push_back(tb::clipmap_sample_item(p.u, p.v, p.lambda));
+        r.wayward += wayward({p.u, p.v, p.lambda, 0});
+        continue;
+      }
+      const footprint::Request q{p.u, p.v, p.r1u, p.r1v, p.r2u, p.r2v, 0xFFFF'FFFFu};
+      run.items.push_back(tb::footprint_clip_item(q));
+      const footprint::Plan plan = footprint::plan(q, fo.setup);
+      for (int i = 0; i < (1 << plan.log2_n); ++i)
+        r.wayward += wayward(footprint::probe(q, plan, i, fo.config.sampler));
     }
     out.frames.push_back(r);
   }
@@ -360,11 +396,15 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
   const int clipped = fo.config.clipped_levels();
   std::string text = fmt::format(
       "flyover {}: {} frames ({}..{}), {}x{}, engine {}\n  virtual texture {} ({} x {}), tiles of "
-      "{} x {} for levels 0..{}, {} substitution\n",
+      "{} x {} for levels 0..{}, {} substitution, {}\n",
       scene_path, run.frames.size(), range.first, last, fo.width, fo.height, name(o.level),
       fo.texture, 1 << fo.config.log2_virtual, 1 << fo.config.log2_virtual,
       1 << fo.config.log2_tile, 1 << fo.config.log2_tile, clipped - 1,
-      fo.config.substitution == clipmap::Substitution::kPerTap ? "per-tap" : "per-sample");
+      fo.config.substitution == clipmap::Substitution::kPerTap ? "per-tap" : "per-sample",
+      fo.footprint ? fmt::format("footprint unit (at most {} probes; samples are pixels, wayward "
+                                 "counts probes)",
+                                 1 << fo.setup.log2_max_probes)
+                   : std::string(texram::name(fo.config.sampler.filter)));
   text +=
       "  frame  centre (u, v)       samples  wayward  texels loaded  rows per level          "
       "cycles\n";

@@ -8,11 +8,15 @@
 //      "terrain": {"log2": 10, "seed": 1},   a generated virtual texture (texsim terrain), or
 //      "file": "x.tx",                       a tiled mipmap maketx made
 //      "tile_log2": 6, "substitution": "per-sample" | "per-tap",
-//      "kind": "rgba" | "luminance", "filter": "trilinear" | "bilinear" | "nearest",
+//      "kind": "rgba" | "luminance",
+//      "filter": "trilinear" | "bilinear" | "nearest" | "footprint", "max_probes": 8,
 //      "border": "wrap" | "clamp" | "mirror",
 //      "frame": [width, height], "fov_degrees": 60, "sky": [r, g, b],
 //      "path": [{"frame": 0, "eye": [x, y, height], "look": [x, y, z]}, ...]}}
-// Frames between keyframes move the eye and the point looked at linearly.
+// Frames between keyframes move the eye and the point looked at linearly. "footprint" renders
+// through the footprint unit on the clip-map (tmu_footprint_clip: trilinear probes along each
+// pixel's longer derivative, up to max_probes, 1..16, a power of two; default 8), where the
+// grazing view of the ground is most anisotropic.
 //
 // Per frame the front end casts a ray per pixel onto the plane z = 0 (exact, analytic: host
 // work): (u, v) is the hit point, lambda the log2 of the longer screen derivative of (u, v)
@@ -35,6 +39,7 @@
 
 #include "clipmap/clipmap.hpp"
 #include "common/image.hpp"
+#include "footprint/footprint.hpp"
 #include "render/render.hpp"
 #include "render/units.hpp"
 
@@ -52,6 +57,9 @@ struct Flyover {
   int terrain_log2 = 0;  // 0: a given file
   uint32_t terrain_seed = 1;
   clipmap::Config config;
+  // The footprint unit in front of the clip-map (filter "footprint"), its setup's configuration.
+  bool footprint = false;
+  footprint::Config setup;
   int width = 160, height = 120;
   double fov_degrees = 60;
   Rgb8 sky{150, 190, 235};

@@ -116,6 +116,17 @@ FootprintClipBlock::FootprintClipBlock(const BlockOptions& options)
   TMU_ADD_RTL_LEVELS(footprint_clip, variant());
 }
 
+FootprintClipBlock::FootprintClipBlock(const clipmap::Config& clip, const footprint::Config& setup,
+                                       const texram::Clut32& clut)
+    : DescribedBlockOf(D::table()), given_(true), clut_(clut) {
+  clipmap::check(clip);
+  options_.fp_widths = setup.widths;
+  first_.clip.config = clip;
+  first_.setup = setup;
+  add_level("hls", hls_level<desc::footprint_clip_sc, hls::FootprintClipSc>(options_.fp_widths));
+  TMU_ADD_RTL_LEVELS(footprint_clip, variant());
+}
+
 FootprintClipSetup FootprintClipBlock::draw(std::mt19937_64& rng) const {
   return {draw_clip_setup(rng), fragments::draw_setup(rng, options_)};
 }
@@ -152,7 +163,15 @@ std::vector<Txn> FootprintClipBlock::environment_items(const FootprintClipSetup&
   return items;
 }
 
-std::vector<Txn> FootprintClipBlock::setup_items() const { return environment_items(first_); }
+std::vector<Txn> FootprintClipBlock::setup_items() const {
+  if (!given_) return environment_items(first_);
+  std::vector<Txn> items = {footprint_clip_cfg_item(first_.clip.config, first_.setup)};
+  if (first_.clip.config.sampler.kind == texram::TexelKind::kIndex) {
+    for (uint32_t i = 0; i < 256; ++i)
+      items.push_back(clip_clut_item<D>(static_cast<uint8_t>(i), clut_[i]));
+  }
+  return items;
+}
 
 std::vector<Txn> FootprintClipBlock::directed_fragments(const FootprintClipSetup& s) const {
   const clipmap::Config& c = s.clip.config;

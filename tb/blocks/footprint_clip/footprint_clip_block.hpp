@@ -46,6 +46,10 @@ class FootprintClipBlock : public DescribedBlockOf<FootprintClipBlock> {
  public:
   // Throws std::invalid_argument for bad setup widths or a maximum probe count outside 0..4.
   explicit FootprintClipBlock(const BlockOptions& options = {});
+  // A given clip-map and setup (a render's): its setup items are the configuration alone (and a
+  // CLUT for index textures); the caller's items load it (clipmap::TileManager).
+  FootprintClipBlock(const clipmap::Config& clip, const footprint::Config& setup,
+                     const texram::Clut32& clut = {});
   std::vector<Txn> setup_items() const override;
   TMU_BLOCK_PIECES;
   std::unique_ptr<Environment> environment(uint64_t seed) const override;
@@ -59,6 +63,8 @@ class FootprintClipBlock : public DescribedBlockOf<FootprintClipBlock> {
 
   BlockOptions options_;
   FootprintClipSetup first_;
+  bool given_ = false;  // a render's clip-map: no content of the block's own
+  texram::Clut32 clut_{};
   // cover() sees the items in order: the configuration and regions in effect.
   mutable size_t cover_next_ = 0;
   mutable FootprintClipSetup cover_setup_;
