@@ -192,24 +192,15 @@ std::string FootprintBlock::variant() const {
   const footprint::Widths& f = first_.setup.widths;
   std::string key =
       t == texram::Widths{} ? "" : fmt::format("s{}w{}l{}", t.sub_texel, t.weight, t.lod_frac);
-  if (!(f == footprint::Widths{})) {
-    key +=
-        fmt::format("{}d{}t{}f{}", key.empty() ? "" : "_", f.deriv_bits, f.table_bits, f.log_frac);
-  }
-  return key;
+  const std::string setup = fragments::setup_variant(f);
+  return key + (key.empty() || setup.empty() ? "" : "_") + setup;
 }
 
 std::string FootprintBlock::repro_options() const {
   const BlockOptions& o = options_;
   std::string out = texram_repro_options(o);
-  auto add = [&out](const std::string& p) { out += (out.empty() ? "" : " ") + p; };
-  if (o.fp_log2_max_probes) add(fmt::format("--max-probes {}", 1 << *o.fp_log2_max_probes));
-  if (o.fp_q_rule) add(fmt::format("--q-rule {}", footprint::name(*o.fp_q_rule)));
-  if (!(o.fp_widths == footprint::Widths{})) {
-    add(fmt::format("--fp-widths {},{},{}", o.fp_widths.deriv_bits, o.fp_widths.table_bits,
-                    o.fp_widths.log_frac));
-  }
-  return out;
+  const std::string setup = fragments::setup_repro_options(o);
+  return out + (out.empty() || setup.empty() ? "" : " ") + setup;
 }
 
 FootprintCfg FootprintBlock::cfg_of(const Txn& cfg) const {

@@ -356,4 +356,21 @@ void cover_shape(const footprint::Request& req, const footprint::Config& c,
   if (p.lambda < 0) ++cov[kLambdaNeg];
 }
 
+std::string setup_repro_options(const BlockOptions& o) {
+  std::string out;
+  auto add = [&out](const std::string& p) { out += (out.empty() ? "" : " ") + p; };
+  if (o.fp_log2_max_probes) add(fmt::format("--max-probes {}", 1 << *o.fp_log2_max_probes));
+  if (o.fp_q_rule) add(fmt::format("--q-rule {}", footprint::name(*o.fp_q_rule)));
+  if (!(o.fp_widths == footprint::Widths{})) {
+    add(fmt::format("--fp-widths {},{},{}", o.fp_widths.deriv_bits, o.fp_widths.table_bits,
+                    o.fp_widths.log_frac));
+  }
+  return out;
+}
+
+std::string setup_variant(const footprint::Widths& w) {
+  if (w == footprint::Widths{}) return "";
+  return fmt::format("d{}t{}f{}", w.deriv_bits, w.table_bits, w.log_frac);
+}
+
 }  // namespace tmu::tb::fragments

@@ -22,6 +22,10 @@ namespace tmu::tb::fragments {
 // or a maximum probe count outside 0..4.
 footprint::Config draw_setup(std::mt19937_64& rng, const BlockOptions& options);
 footprint::Config first_setup(const BlockOptions& options);
+// The setup's options a reproduce command repeats (--max-probes, --q-rule, --fp-widths), as set.
+std::string setup_repro_options(const BlockOptions& options);
+// The rtl variant key of the setup's widths ("" for the defaults, else d<D>t<T>f<F>).
+std::string setup_variant(const footprint::Widths& widths);
 
 // Raw port values saturated to TexCoord and TexDeriv, and a fragment of them.
 int32_t clamp_coord(int64_t raw);

@@ -132,23 +132,11 @@ FootprintClipSetup FootprintClipBlock::draw(std::mt19937_64& rng) const {
 }
 
 std::string FootprintClipBlock::variant() const {
-  const footprint::Widths& f = options_.fp_widths;
-  return f == footprint::Widths{}
-             ? ""
-             : fmt::format("d{}t{}f{}", f.deriv_bits, f.table_bits, f.log_frac);
+  return fragments::setup_variant(options_.fp_widths);
 }
 
 std::string FootprintClipBlock::repro_options() const {
-  const BlockOptions& o = options_;
-  std::string out;
-  auto add = [&out](const std::string& p) { out += (out.empty() ? "" : " ") + p; };
-  if (o.fp_log2_max_probes) add(fmt::format("--max-probes {}", 1 << *o.fp_log2_max_probes));
-  if (o.fp_q_rule) add(fmt::format("--q-rule {}", footprint::name(*o.fp_q_rule)));
-  if (!(o.fp_widths == footprint::Widths{})) {
-    add(fmt::format("--fp-widths {},{},{}", o.fp_widths.deriv_bits, o.fp_widths.table_bits,
-                    o.fp_widths.log_frac));
-  }
-  return out;
+  return fragments::setup_repro_options(options_);
 }
 
 std::vector<Txn> FootprintClipBlock::environment_items(const FootprintClipSetup& s) const {

@@ -96,23 +96,10 @@ FootprintSetupBlock::FootprintSetupBlock(const BlockOptions& options)
   TMU_ADD_RTL_LEVELS(footprint_setup, variant());
 }
 
-std::string FootprintSetupBlock::variant() const {
-  const footprint::Widths& w = first_.widths;
-  if (w == footprint::Widths{}) return "";
-  return fmt::format("d{}t{}f{}", w.deriv_bits, w.table_bits, w.log_frac);
-}
+std::string FootprintSetupBlock::variant() const { return fragments::setup_variant(first_.widths); }
 
 std::string FootprintSetupBlock::repro_options() const {
-  const BlockOptions& o = options_;
-  std::string out;
-  auto add = [&out](const std::string& p) { out += (out.empty() ? "" : " ") + p; };
-  if (o.fp_log2_max_probes) add(fmt::format("--max-probes {}", 1 << *o.fp_log2_max_probes));
-  if (o.fp_q_rule) add(fmt::format("--q-rule {}", footprint::name(*o.fp_q_rule)));
-  if (!(o.fp_widths == footprint::Widths{})) {
-    add(fmt::format("--fp-widths {},{},{}", o.fp_widths.deriv_bits, o.fp_widths.table_bits,
-                    o.fp_widths.log_frac));
-  }
-  return out;
+  return fragments::setup_repro_options(options_);
 }
 
 std::vector<Txn> FootprintSetupBlock::setup_items() const { return {config_item(first_)}; }
