@@ -1,9 +1,9 @@
 // SystemC model of footprint assembly on a clip-map (000 §10 in front of 003), the same ports
 // (TMU_SC_PORTS: tb/blocks/footprint_clip/footprint_clip.json) and handshakes as
-// rtl/footprint/tmu_footprint_clip.sv: the footprint unit's model (footprint_sc.hpp: the same
-// two threads, golden footprint::plan, probe and average) with the probes sampled by an instance
-// of the clip-map unit's model (hls/texram/clipmap_sc.hpp), whose memory port and counters are
-// the unit's.
+// rtl/footprint/tmu_footprint_clip.sv: the footprint unit's marcher and averager
+// (footprint_march_sc.hpp, as footprint_sc.hpp) with the probes sampled by an instance of the
+// clip-map unit's model (hls/texram/clipmap_sc.hpp), whose memory port and counters are the
+// unit's.
 //
 // - the setup/marcher: while idle it takes a CLUT, region or load write (the first offered) or a
 //   fragment (both at one edge: the write is passed first). A write is passed to the clip-map's
@@ -17,34 +17,25 @@
 // RTL, not its timing. The setup's widths are a constructor argument, as the RTL's parameters.
 #pragma once
 
-#include <algorithm>
-#include <array>
 #include <cstdint>
-#include <span>
 #include <systemc>
 
 #include "blocks/footprint_clip/footprint_clip_ports.hpp"
 #include "footprint/footprint.hpp"
 #include "formats/formats.hpp"
 #include "hls/common/sc_ports.hpp"
+#include "hls/footprint/footprint_march_sc.hpp"
 #include "hls/texram/clipmap_sc.hpp"
-#include "texram/sampler_config.hpp"
 
 namespace tmu::hls {
 
-class FootprintClipSc : public sc_core::sc_module {
+class FootprintClipSc : public FootprintMarchSc<FootprintClipSc> {
  public:
-  // Fragments planned whose results the averager has not yet collected, at most.
-  static constexpr int kCountDepth = 4;
-
   TMU_SC_PORTS(footprint_clip)
 
   SC_HAS_PROCESS(FootprintClipSc);
   FootprintClipSc(sc_core::sc_module_name name, const footprint::Widths& widths = {})
-      : sc_core::sc_module(name), widths_(widths), clip_("clipmap") {
-    // plan() checks the widths: fail at elaboration, not in the middle of a run.
-    (void)footprint::plan(footprint::Request{},
-                          footprint::Config{0, footprint::QRule::kHeights, widths_});
+      : FootprintMarchSc(name, widths), clip_("clipmap") {
     clip_.clk_i(clk_i);
     clip_.rst_ni(rst_ni);
     clip_.cfg_log2_virtual_i(cfg_log2_virtual_i);
@@ -89,9 +80,9 @@ class FootprintClipSc : public sc_core::sc_module {
     clip_.mem_req_wdata_o(mem_req_wdata_o);
     clip_.mem_resp_valid_i(mem_resp_valid_i);
     clip_.mem_resp_data_i(mem_resp_data_i);
-    clip_.out_valid_o(clip_out_valid_);
-    clip_.out_ready_i(clip_out_ready_);
-    clip_.out_rgba_o(clip_out_rgba_);
+    clip_.out_valid_o(result_valid_);
+    clip_.out_ready_i(result_ready_);
+    clip_.out_rgba_o(result_rgba_);
     clip_.stat_wayward_samples_o(stat_wayward_samples_o);
     clip_.stat_substituted_taps_o(stat_substituted_taps_o);
     clip_.stat_conflicts_o(stat_conflicts_o);
@@ -103,21 +94,13 @@ class FootprintClipSc : public sc_core::sc_module {
   }
 
  private:
-  // ---- setup / marcher --------------------------------------------------------------------
-
   void march() {
     // Reset. Not ready: the edge that leaves reset is spent here.
     set_ready(false);
     clip_clut_valid_.write(false);
     clip_region_valid_.write(false);
     clip_load_valid_.write(false);
-    probe_valid_.write(false);
-    probe_u_.write(0);
-    probe_v_.write(0);
-    probe_lambda_.write(0);
-    probe_shade_.write(0);
-    probes_ = 0;
-    stat_probes_o.write(0);
+    reset_probes();
     wait();
     while (true) {
       // Idle: a write or a fragment (or both: the write is then passed first).
@@ -151,41 +134,6 @@ class FootprintClipSc : public sc_core::sc_module {
     }
   }
 
-  footprint::Request fragment_request() const {
-    const auto coord = [](const auto& port) {
-      return static_cast<int32_t>(signed_value(port.read(), fmts::kTexCoord));
-    };
-    const auto deriv = [](const auto& port) {
-      return static_cast<int32_t>(signed_value(port.read(), fmts::kTexDeriv));
-    };
-    footprint::Request r;
-    r.u = coord(req_u_i);
-    r.v = coord(req_v_i);
-    r.r1u = deriv(req_r1u_i);
-    r.r1v = deriv(req_r1v_i);
-    r.r2u = deriv(req_r2u_i);
-    r.r2v = deriv(req_r2v_i);
-    r.shade = static_cast<uint32_t>(req_shade_i.read());
-    return r;
-  }
-
-  footprint::Config footprint_config() const {
-    footprint::Config c;
-    c.log2_max_probes =
-        std::min(static_cast<int>(cfg_log2_max_probes_i.read().to_uint()), fmts::kMaxProbeLog2);
-    c.q_rule = static_cast<footprint::QRule>(cfg_q_rule_i.read().to_uint());
-    c.widths = widths_;
-    return c;
-  }
-
-  // probe() needs the border modes (a coordinate beyond the port wraps or saturates).
-  texram::SamplerConfig sampler_config() const {
-    texram::SamplerConfig c;
-    c.border_u = static_cast<texram::Border>(cfg_border_u_i.read().to_uint());
-    c.border_v = static_cast<texram::Border>(cfg_border_v_i.read().to_uint());
-    return c;
-  }
-
   // Every input port is ready while the marcher is idle.
   void set_ready(bool ready) {
     clut_ready_o.write(ready);
@@ -203,99 +151,20 @@ class FootprintClipSc : public sc_core::sc_module {
     valid.write(false);
   }
 
-  // The fragment's probes to the clip-map, one per clock while it takes them.
-  void issue(const footprint::Request& request, const footprint::Plan& plan,
-             const texram::SamplerConfig& sampler) {
-    while (!counts_.nb_write(plan.log2_n)) wait();  // the averager is kCountDepth behind
-    const int n = 1 << plan.log2_n;
-    for (int i = 0; i < n; ++i) {
-      const texram::Request q = footprint::probe(request, plan, i, sampler);
-      // Raw port bits (the clip-map's ports are its description's).
-      probe_u_.write(static_cast<uint32_t>(q.u) & ((1u << fmts::kTexCoord.width()) - 1));
-      probe_v_.write(static_cast<uint32_t>(q.v) & ((1u << fmts::kTexCoord.width()) - 1));
-      probe_lambda_.write(static_cast<uint32_t>(q.lambda) & ((1u << fmts::kLod.width()) - 1));
-      probe_shade_.write(q.shade);
-      probe_valid_.write(true);
-      do {
-        wait();
-      } while (!probe_ready_.read());
-      ++probes_;
-      stat_probes_o.write(probes_);
-    }
-    probe_valid_.write(false);
-  }
-
-  // ---- averager ---------------------------------------------------------------------------
-
-  void collect() {
-    out_valid_o.write(false);
-    out_rgba_o.write(0);
-    clip_out_ready_.write(false);
-    out_full_ = false;
-    out_rgba_ = 0;
-    for (int stale = 0; counts_.nb_read(stale);) {
-    }
-    wait();
-    while (true) {
-      int log2_n = 0;
-      while (!counts_.nb_read(log2_n)) step();
-      const int n = 1 << log2_n;
-      std::array<uint32_t, size_t{1} << fmts::kMaxProbeLog2> colours{};
-      clip_out_ready_.write(true);
-      for (int i = 0; i < n;) {
-        step();
-        if (clip_out_valid_.read()) {
-          colours[static_cast<size_t>(i++)] = static_cast<uint32_t>(clip_out_rgba_.read());
-        }
-      }
-      clip_out_ready_.write(false);
-      const uint32_t rgba =
-          footprint::average(std::span(colours.data(), static_cast<size_t>(n)), log2_n);
-      while (out_full_) step();
-      out_full_ = true;
-      out_rgba_ = rgba;
-    }
-  }
-
-  // One clock of the averager: present the output register, wait for the edge, and retire
-  // the output if it was taken. Reads after it see the inputs from before the edge.
-  void step() {
-    out_valid_o.write(out_full_);
-    out_rgba_o.write(out_rgba_);
-    wait();
-    if (out_full_ && out_ready_i.read()) out_full_ = false;
-  }
-
-  template <int W>
-  using sig = sc_core::sc_signal<sc_port_t<W>>;
-
-  footprint::Widths widths_;
   ClipmapSc clip_;
   sc_core::sc_signal<bool> clip_clut_valid_{"clip_clut_valid"}, clip_clut_ready_{"clip_clut_ready"};
-  sig<fmts::kClutIndex.width()> clip_clut_addr_{"clip_clut_addr"};
-  sig<fmts::kRgba8888.width()> clip_clut_rgba_{"clip_clut_rgba"};
+  sig<formats::kClutIndex.width()> clip_clut_addr_{"clip_clut_addr"};
+  sig<formats::kRgba8888.width()> clip_clut_rgba_{"clip_clut_rgba"};
   sc_core::sc_signal<bool> clip_region_valid_{"clip_region_valid"},
       clip_region_ready_{"clip_region_ready"};
-  sig<fmts::kMipLevel.width()> clip_region_level_{"clip_region_level"};
-  sig<fmts::kClipBound.width()> clip_region_x0_{"clip_region_x0"},
+  sig<formats::kMipLevel.width()> clip_region_level_{"clip_region_level"};
+  sig<formats::kClipBound.width()> clip_region_x0_{"clip_region_x0"},
       clip_region_y0_{"clip_region_y0"}, clip_region_x1_{"clip_region_x1"},
       clip_region_y1_{"clip_region_y1"};
   sc_core::sc_signal<bool> clip_load_valid_{"clip_load_valid"}, clip_load_ready_{"clip_load_ready"};
-  sig<fmts::kMipLevel.width()> clip_load_level_{"clip_load_level"};
-  sig<fmts::kClipCoord.width()> clip_load_x_{"clip_load_x"}, clip_load_y_{"clip_load_y"};
-  sig<fmts::kRgba8888.width()> clip_load_texel_{"clip_load_texel"};
-  sc_core::sc_signal<bool> probe_valid_{"probe_valid"}, probe_ready_{"probe_ready"};
-  sig<fmts::kTexCoord.width()> probe_u_{"probe_u"}, probe_v_{"probe_v"};
-  sig<fmts::kLod.width()> probe_lambda_{"probe_lambda"};
-  sig<fmts::kRgba8888.width()> probe_shade_{"probe_shade"};
-  sc_core::sc_signal<bool> clip_out_valid_{"clip_out_valid"}, clip_out_ready_{"clip_out_ready"};
-  sig<fmts::kRgba8888.width()> clip_out_rgba_{"clip_out_rgba"};
-  // k = log2 N of each planned fragment, marcher to averager.
-  sc_core::sc_fifo<int> counts_{"counts", kCountDepth};
-
-  uint32_t probes_ = 0;  // wraps, as the counter port
-  bool out_full_ = false;
-  uint32_t out_rgba_ = 0;
+  sig<formats::kMipLevel.width()> clip_load_level_{"clip_load_level"};
+  sig<formats::kClipCoord.width()> clip_load_x_{"clip_load_x"}, clip_load_y_{"clip_load_y"};
+  sig<formats::kRgba8888.width()> clip_load_texel_{"clip_load_texel"};
 };
 
 }  // namespace tmu::hls
