@@ -67,8 +67,12 @@ class FootprintMarchSc : public sc_core::sc_module {
     const auto deriv = [](const auto& port) {
       return static_cast<int32_t>(signed_value(port.read(), formats::kTexDeriv));
     };
-    return {coord(d.req_u_i),   coord(d.req_v_i),   deriv(d.req_r1u_i),
-            deriv(d.req_r1v_i), deriv(d.req_r2u_i), deriv(d.req_r2v_i),
+    return {coord(d.req_u_i),
+            coord(d.req_v_i),
+            deriv(d.req_r1u_i),
+            deriv(d.req_r1v_i),
+            deriv(d.req_r2u_i),
+            deriv(d.req_r2v_i),
             static_cast<uint32_t>(d.req_shade_i.read())};
   }
   footprint::Config footprint_config() {
