@@ -4,7 +4,8 @@
 /// (x >> (m - L), y >> (m - L)), or at the first whole level C when none does; a held tap, a
 /// tap of a whole level, a tap outside the texture and every tap when substitute_i is low
 /// stay as they are. Combinational: one region test per clipped level above L, side by side
-/// (the regions are registers; only the shifts depend on the tap), then a priority choice.
+/// (the regions are registers; the tap is shifted once, into level-0 units), then a priority
+/// choice.
 ///
 /// Example: C = 3, L = 0, (x, y) = (70, 9), regions: level 0 [40, 72) x [10, 42), level 1
 /// [20, 52) x [0, 32): level 0 does not hold (70, 9) (9 < 10), level 1 holds (35, 4): the tap
@@ -36,8 +37,15 @@ module tmu_clip_tap #(
   localparam int unsigned BW = tmu_pkg::ClipBoundW;
 
   // here[m]: level m's tile holds (x, y) (the tap's own level's test); holds[m]: it holds
-  // (x >> (m - L), y >> (m - L)), for a clipped level m above L.
+  // (x >> (m - L), y >> (m - L)), for a clipped level m above L. Tested without a shifter per
+  // level: x >> k >= x0 <=> x << L >= x0 << m, and x >> k < x1 <=> x << L < x1 << m (x, x0, x1
+  // whole numbers, k = m - L), so the tap is shifted once into level-0 units and each level's
+  // bounds by its constant m (wiring).
+  localparam int unsigned WW = BW + Levels - 1;  // x0 << m, m < Levels; x << L, L < m
   logic [Levels-1:0] here, holds;
+  logic [WW-1:0]     x_l0, y_l0;
+  assign x_l0 = WW'(x_i) << level_i;
+  assign y_l0 = WW'(y_i) << level_i;
 
   function automatic logic in_rect(tmu_pkg::clip_coord_t x, tmu_pkg::clip_coord_t y,
                                   tmu_pkg::clip_bound_t x0, tmu_pkg::clip_bound_t y0,
@@ -46,18 +54,15 @@ module tmu_clip_tap #(
   endfunction
 
   for (genvar m = 0; m < Levels; m++) begin : gen_level
-    tmu_pkg::mip_level_t k;
-    assign k        = LW'(m) - level_i;
     tmu_pkg::clip_bound_t x0, y0, x1, y1;
     assign {y1, x1, y0, x0} = region_i[4*m*BW +: 4*BW];
     assign here[m]  = in_rect(x_i, y_i, x0, y0, x1, y1);
     if (m == 0) begin : gen_first  // no level is below level 0
-      logic unused_k;
-      assign unused_k = ^k;
       assign holds[m] = 1'b0;
     end else begin : gen_above
       assign holds[m] = level_i < LW'(m) && LW'(m) < clipped_i &&
-                        in_rect(x_i >> k, y_i >> k, x0, y0, x1, y1);
+                        x_l0 >= (WW'(x0) << m) && x_l0 < (WW'(x1) << m) &&
+                        y_l0 >= (WW'(y0) << m) && y_l0 < (WW'(y1) << m);
     end
   end
 
