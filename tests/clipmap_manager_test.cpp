@@ -2,13 +2,14 @@
 // its loads build a clip-map whose samples equal the trilinear unit's on the whole pyramid of
 // that file where the tiles hold the taps; a frame after any path of frames equals the same
 // frame from scratch (the clip-map is a function of the eye); a move of one texel costs one row
-// at level 0; a bad file is a clear error.
+// at level 0; a bad file is a clear error. And the generated terrain's file.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <random>
 
+#include "clipmap/terrain.hpp"
 #include "clipmap/tile_centre.hpp"
 #include "clipmap/tile_manager.hpp"
 #include "common/error.hpp"
@@ -152,6 +153,35 @@ TEST(ClipmapManagerTest, AFileItCannotUseIsAClearError) {
     EXPECT_NE(std::string(e.what()).find("10 expected"), std::string::npos) << e.what();
   }
   EXPECT_THROW(TileManager(config(), (dir / "missing.tx").string()), InputError);
+}
+
+// The generated terrain is streamed in bands of rows to its picture (a 32k terrain would not fit
+// in memory whole): the file's level 0 is the picture terrain() makes whole, band after band, a
+// band that does not divide the side included; a fill that fails leaves no file.
+TEST(ClipmapTerrainTest, TheStreamedPictureIsTheWholeOne) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("tmu_clipmap_terrain_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string tx = (dir / "t.tx").string();
+  write_terrain_mipmap(tx, 7, 5, 32, /*keep_picture=*/true);
+  const ImageRgb8 whole = terrain(7, 5);
+  EXPECT_EQ(read_image((dir / "t.tif").string()), whole);
+  EXPECT_EQ(read_image(tx), whole);  // maketx's level 0
+
+  const std::string bands = (dir / "bands.png").string();
+  write_image_rows(bands, 128, 128, 23, [&](int y, int n, Rgb8* rows) {
+    for (int i = 0; i < n; ++i)
+      std::copy_n(&whole.at(0, y + i), 128, rows + static_cast<size_t>(i) * 128);
+  });
+  EXPECT_EQ(read_image(bands), whole);
+
+  const std::string failed = (dir / "failed.png").string();
+  EXPECT_THROW(write_image_rows(failed, 128, 128, 16,
+                                [](int y, int, Rgb8*) {
+                                  if (y >= 64) throw InputError("source", "", "cut off");
+                                }),
+               InputError);
+  EXPECT_FALSE(fs::exists(failed));
 }
 
 }  // namespace

@@ -12,11 +12,12 @@
 
 namespace tmu::clipmap {
 
-// 2^log2_side x 2^log2_side texels; the same seed gives the same picture.
+// 2^log2_side x 2^log2_side texels; the same seed gives the same picture (and the file's).
 ImageRgb8 terrain(int log2_side, uint32_t seed);
 
 // The picture as a tiled mipmap at `path`, made by maketx (box filter, tiles of `tile` texels)
-// from a PNG beside it (removed unless keep_picture). Written under a temporary name and
+// from a TIFF beside it (streamed in bands of rows: the generator holds three rows of heights,
+// whatever the size; removed unless keep_picture). Written under a temporary name and
 // renamed: a failure leaves no file. Throws InputError naming the path when maketx fails.
 void write_terrain_mipmap(const std::string& path, int log2_side, uint32_t seed, int tile,
                           bool keep_picture = false);

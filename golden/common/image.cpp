@@ -55,6 +55,26 @@ void write_image(const std::string& path, const ImageRgb8& image) {
   write_image_file_atomically(path, spec, image.pixels.data());
 }
 
+void write_image_rows(const std::string& path, int width, int height, int band,
+                      const std::function<void(int y, int n, Rgb8* rows)>& fill) {
+  ImageFileSpec spec;
+  spec.width = width;
+  spec.height = height;
+  spec.channels = 3;
+  write_atomically(path, [&](const std::string& tmp) {
+    std::string why;
+    const ImageRows rows = [&](int y, int n, void* data) { fill(y, n, static_cast<Rgb8*>(data)); };
+    switch (write_image_file_rows(path, tmp, spec, band, rows, &why)) {
+      case ImageWrite::kOk:
+        return;
+      case ImageWrite::kNoWriter:
+        throw InputError(path, "", "no image writer for this extension");
+      case ImageWrite::kFailed:
+        throw InputError(path, "", "cannot write image: " + why);
+    }
+  });
+}
+
 double psnr(const ImageRgb8& a, const ImageRgb8& b) {
   if (a.width != b.width || a.height != b.height) {
     throw std::invalid_argument("psnr: image sizes differ");

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,12 @@ void write_image(const std::string& path, const ImageRgb8& image);
 // write fails, and the file that was there is kept.
 void write_image_file_atomically(const std::string& path, const ImageFileSpec& spec,
                                  const void* pixels);
+
+// Writes a width x height RGB image too large for memory atomically, `band` rows at a time, each
+// band's pixels filled by `fill(y, n, rows)` (rows y .. y + n - 1) just before it is written.
+// Errors as write_image.
+void write_image_rows(const std::string& path, int width, int height, int band,
+                      const std::function<void(int y, int n, Rgb8* rows)>& fill);
 
 // Peak signal-to-noise ratio over all RGB samples, in dB (infinity when identical).
 double psnr(const ImageRgb8& a, const ImageRgb8& b);

@@ -1,5 +1,5 @@
 // Image files through OpenImageIO, behind an interface without its types. Every image file of
-// the project is read and written through these two functions; image_file_oiio.cpp implements
+// the project is read and written through these functions; image_file_oiio.cpp implements
 // them. Why not OIIO directly: texsim reaches OpenImageIO only through a plugin it loads when a
 // command first touches an image (common/oiio_plugin.hpp), because loading OpenImageIO's
 // ~250 shared libraries costs ~0.3 s of CPU that short commands such as `texsim formats` need
@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -58,5 +59,13 @@ enum class ImageWrite { kOk, kNoWriter, kFailed };
 // as `file`. kNoWriter: no writer for that extension; kFailed: *error says why.
 ImageWrite write_image_file(const std::string& format_path, const std::string& file,
                             const ImageFileSpec& spec, const void* pixels, std::string* error);
+
+// Fills rows [y, y + n) of an image (spec's format, row-major, interleaved) into `rows`.
+using ImageRows = std::function<void(int y, int n, void* rows)>;
+// As write_image_file, for an image larger than memory: `band` rows at a time, each band filled
+// by `fill` just before it is written (scanlines, in order).
+ImageWrite write_image_file_rows(const std::string& format_path, const std::string& file,
+                                 const ImageFileSpec& spec, int band, const ImageRows& fill,
+                                 std::string* error);
 
 }  // namespace tmu

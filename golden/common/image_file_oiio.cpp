@@ -73,4 +73,33 @@ ImageWrite write_image_file(const std::string& format_path, const std::string& f
   return ImageWrite::kOk;
 }
 
+ImageWrite write_image_file_rows(const std::string& format_path, const std::string& file,
+                                 const ImageFileSpec& spec, int band, const ImageRows& fill,
+                                 std::string* error) {
+  auto out = OIIO::ImageOutput::create(format_path);
+  if (!out) return ImageWrite::kNoWriter;
+  const OIIO::TypeDesc type =
+      spec.format == PixelFormat::kFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
+  OIIO::ImageSpec s(spec.width, spec.height, spec.channels, type);
+  for (const auto& [name, value] : spec.attributes) s.attribute(name, value);
+  if (!out->open(file, s)) {
+    *error = out->geterror();
+    return ImageWrite::kFailed;
+  }
+  std::vector<uint8_t> rows(static_cast<size_t>(band) * s.scanline_bytes());
+  for (int y = 0; y < spec.height; y += band) {
+    const int n = std::min(band, spec.height - y);
+    fill(y, n, rows.data());
+    if (!out->write_scanlines(y, y + n, 0, type, rows.data())) {
+      *error = out->geterror();
+      return ImageWrite::kFailed;
+    }
+  }
+  if (!out->close()) {
+    *error = out->geterror();
+    return ImageWrite::kFailed;
+  }
+  return ImageWrite::kOk;
+}
+
 }  // namespace tmu

@@ -68,6 +68,12 @@ ImageWrite write_image_file(const std::string& format_path, const std::string& f
   return plugin().write_image_file(format_path, file, spec, pixels, error);
 }
 
+ImageWrite write_image_file_rows(const std::string& format_path, const std::string& file,
+                                 const ImageFileSpec& spec, int band, const ImageRows& fill,
+                                 std::string* error) {
+  return plugin().write_image_file_rows(format_path, file, spec, band, fill, error);
+}
+
 namespace texram {
 
 void make_oiio_texture(const std::string& path, int width, int height, std::vector<float> rgba) {

@@ -7,6 +7,7 @@ extern "C" const tmu::OiioPlugin* tmu_oiio_plugin() {
     tmu::OiioPlugin t;
     t.open_image_file = &tmu::open_image_file;
     t.write_image_file = &tmu::write_image_file;
+    t.write_image_file_rows = &tmu::write_image_file_rows;
     t.make_oiio_texture = &tmu::texram::make_oiio_texture;
     t.make_oiio_aniso_sampler = &tmu::texram::make_oiio_aniso_sampler;
     return t;

@@ -19,13 +19,15 @@ namespace tmu {
 
 // Bumped whenever OiioPlugin changes: the loader refuses a plugin built from other sources rather
 // than calling through a table of another shape.
-inline constexpr int kOiioPluginVersion = 2;  // 2: ImageFileReader reads MIP levels' tiles
+// 2: ImageFileReader reads MIP levels' tiles; 3: write_image_file_rows.
+inline constexpr int kOiioPluginVersion = 3;
 
 struct OiioPlugin {
   int version = kOiioPluginVersion;
   size_t size = sizeof(OiioPlugin);
   decltype(&tmu::open_image_file) open_image_file = nullptr;
   decltype(&tmu::write_image_file) write_image_file = nullptr;
+  decltype(&tmu::write_image_file_rows) write_image_file_rows = nullptr;
   void (*make_oiio_texture)(const std::string&, int, int, std::vector<float>) = nullptr;
   decltype(&tmu::texram::make_oiio_aniso_sampler) make_oiio_aniso_sampler = nullptr;
 };

@@ -24,7 +24,7 @@ void add_terrain_command(CLI::App& app, ExitCode& exit_code) {
     bool keep_picture = false;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("output", a->out, "The tiled mipmap (.tx); the picture goes beside it as .png")
+  cmd->add_option("output", a->out, "The tiled mipmap (.tx); the picture goes beside it as .tif")
       ->required();
   cmd->add_option("--log2", a->log2, "log2 of the side: 10 is 1024 texels, 15 the patent's 32k")
       ->check(CLI::Range(2, 15))
@@ -33,7 +33,7 @@ void add_terrain_command(CLI::App& app, ExitCode& exit_code) {
       ->check(CLI::Range(8, 1024))
       ->capture_default_str();
   cmd->add_option("--seed", a->seed, "the terrain's seed")->capture_default_str();
-  cmd->add_flag("--keep-picture", a->keep_picture, "keep the .png the file is made from");
+  cmd->add_flag("--keep-picture", a->keep_picture, "keep the .tif the file is made from");
   cmd->callback([a, &exit_code] {
     const auto start = std::chrono::steady_clock::now();
     clipmap::write_terrain_mipmap(a->out, a->log2, a->seed, a->tile, a->keep_picture);
