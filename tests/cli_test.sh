@@ -146,6 +146,9 @@ expect "a fly-over's probe count that is not a power of two" 2 "probes.json: fly
 sed 's/"filter": "trilinear"/"filter": "trilinear", "max_probes": 8/' "$root/scenes/flyover.json" >probes2.json
 expect "max_probes without the footprint filter" 2 'probes2.json: flyover.max_probes.*footprint' -- \
   "$texsim" render probes2.json --out rx
+sed 's|"terrain": {"log2": 11, "seed": 3}|"file": "img.png"|' "$root/scenes/flyover.json" >given.json
+expect "a fly-over's file that is not a square power of two names the field" 2 \
+  'given.json: flyover.file: .*img.png: 37 x 21' -- "$texsim" render given.json --out rx
 expect "fly-over frames beyond the path" 2 "frames 5..40 of a path of 12" -- \
   "$texsim" render "$root/scenes/flyover.json" --frames 5-40 --out rx
 expect "a fly-over has no ideal render" 2 "golden, hls or rtl" -- \

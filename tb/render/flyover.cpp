@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -18,6 +19,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/image.hpp"
+#include "common/image_file.hpp"
 #include "formats/formats.hpp"
 #include "render/unit_check.hpp"
 #include "scene/json_node.hpp"
@@ -59,6 +61,19 @@ Flyover load_flyover(const std::string& scene_path, const std::string& out_dir) 
     fo.texture = f.at("file").string();
     const fs::path p(fo.texture);
     if (p.is_relative()) fo.texture = (fs::path(scene_path).parent_path() / p).string();
+    // The virtual texture's size is the file's level 0 (the tile manager checks the rest).
+    std::string why;
+    const auto file = open_image_file(fo.texture, &why);
+    if (!file)
+      f.at("file").fail(fo.texture + ": cannot open: " + (why.empty() ? "no reader" : why));
+    const int side = file->width();
+    if (side != file->height() || side < 4 || side > (1 << clipmap::kMaxLog2Virtual) ||
+        (side & (side - 1)) != 0) {
+      f.at("file").fail(
+          fmt::format("{}: {} x {}, expected a square of 4 .. {} texels, a power of two",
+                      fo.texture, side, file->height(), 1 << clipmap::kMaxLog2Virtual));
+    }
+    c.log2_virtual = std::countr_zero(static_cast<unsigned>(side));
   }
   c.log2_tile =
       static_cast<int>(f.at("tile_log2").integer(clipmap::kMinLog2Tile, clipmap::kMaxLog2Tile));
