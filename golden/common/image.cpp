@@ -32,46 +32,49 @@ ImageRgb8 read_image(const std::string& path) {
   return img;
 }
 
-void write_image_file_atomically(const std::string& path, const ImageFileSpec& spec,
-                                 const void* pixels) {
-  write_atomically(path, [&](const std::string& tmp) {
-    std::string why;
-    switch (write_image_file(path, tmp, spec, pixels, &why)) {
-      case ImageWrite::kOk:
-        return;
-      case ImageWrite::kNoWriter:
-        throw InputError(path, "", "no image writer for this extension");
-      case ImageWrite::kFailed:
-        throw InputError(path, "", "cannot write image: " + why);
-    }
-  });
+namespace {
+
+// The InputError of a write that did not succeed, naming the file.
+void check_written(const std::string& path, ImageWrite result, const std::string& why) {
+  switch (result) {
+    case ImageWrite::kOk:
+      return;
+    case ImageWrite::kNoWriter:
+      throw InputError(path, "", "no image writer for this extension");
+    case ImageWrite::kFailed:
+      throw InputError(path, "", "cannot write image: " + why);
+  }
 }
 
-void write_image(const std::string& path, const ImageRgb8& image) {
-  ImageFileSpec spec;
-  spec.width = image.width;
-  spec.height = image.height;
-  spec.channels = 3;
-  write_image_file_atomically(path, spec, image.pixels.data());
-}
-
-void write_image_rows(const std::string& path, int width, int height, int band,
-                      const std::function<void(int y, int n, Rgb8* rows)>& fill) {
+ImageFileSpec rgb8_spec(int width, int height) {
   ImageFileSpec spec;
   spec.width = width;
   spec.height = height;
   spec.channels = 3;
+  return spec;
+}
+
+}  // namespace
+
+void write_image_file_atomically(const std::string& path, const ImageFileSpec& spec,
+                                 const void* pixels) {
   write_atomically(path, [&](const std::string& tmp) {
     std::string why;
-    const ImageRows rows = [&](int y, int n, void* data) { fill(y, n, static_cast<Rgb8*>(data)); };
-    switch (write_image_file_rows(path, tmp, spec, band, rows, &why)) {
-      case ImageWrite::kOk:
-        return;
-      case ImageWrite::kNoWriter:
-        throw InputError(path, "", "no image writer for this extension");
-      case ImageWrite::kFailed:
-        throw InputError(path, "", "cannot write image: " + why);
-    }
+    check_written(path, write_image_file(path, tmp, spec, pixels, &why), why);
+  });
+}
+
+void write_image(const std::string& path, const ImageRgb8& image) {
+  write_image_file_atomically(path, rgb8_spec(image.width, image.height), image.pixels.data());
+}
+
+void write_image_rows(const std::string& path, int width, int height, int band,
+                      const std::function<void(int y, int n, Rgb8* rows)>& fill) {
+  const ImageRows rows = [&](int y, int n, void* data) { fill(y, n, static_cast<Rgb8*>(data)); };
+  write_atomically(path, [&](const std::string& tmp) {
+    std::string why;
+    check_written(
+        path, write_image_file_rows(path, tmp, rgb8_spec(width, height), band, rows, &why), why);
   });
 }
 

@@ -3,6 +3,8 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <memory>
+#include <vector>
 
 #include "common/image_file.hpp"
 
@@ -58,47 +60,62 @@ std::unique_ptr<ImageFileReader> open_image_file(const std::string& path, std::s
   return std::make_unique<OiioReader>(std::move(in));
 }
 
+namespace {
+
+// An image output for `spec` open on `file` (format from format_path's extension), and the pixel
+// type it takes; nullptr with kNoWriter or kFailed (*error says why) in *result.
+std::unique_ptr<OIIO::ImageOutput> open_output(const std::string& format_path,
+                                               const std::string& file, const ImageFileSpec& spec,
+                                               OIIO::TypeDesc* type, ImageWrite* result,
+                                               std::string* error) {
+  auto out = OIIO::ImageOutput::create(format_path);
+  if (!out) {
+    *result = ImageWrite::kNoWriter;
+    return nullptr;
+  }
+  *type = spec.format == PixelFormat::kFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
+  OIIO::ImageSpec s(spec.width, spec.height, spec.channels, *type);
+  for (const auto& [name, value] : spec.attributes) s.attribute(name, value);
+  if (!out->open(file, s)) {
+    *error = out->geterror();
+    *result = ImageWrite::kFailed;
+    return nullptr;
+  }
+  return out;
+}
+
+ImageWrite failed(OIIO::ImageOutput& out, std::string* error) {
+  *error = out.geterror();
+  return ImageWrite::kFailed;
+}
+
+}  // namespace
+
 ImageWrite write_image_file(const std::string& format_path, const std::string& file,
                             const ImageFileSpec& spec, const void* pixels, std::string* error) {
-  auto out = OIIO::ImageOutput::create(format_path);
-  if (!out) return ImageWrite::kNoWriter;
-  const OIIO::TypeDesc type =
-      spec.format == PixelFormat::kFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-  OIIO::ImageSpec s(spec.width, spec.height, spec.channels, type);
-  for (const auto& [name, value] : spec.attributes) s.attribute(name, value);
-  if (!out->open(file, s) || !out->write_image(type, pixels) || !out->close()) {
-    *error = out->geterror();
-    return ImageWrite::kFailed;
-  }
+  OIIO::TypeDesc type;
+  ImageWrite result = ImageWrite::kOk;
+  const auto out = open_output(format_path, file, spec, &type, &result, error);
+  if (!out) return result;
+  if (!out->write_image(type, pixels) || !out->close()) return failed(*out, error);
   return ImageWrite::kOk;
 }
 
 ImageWrite write_image_file_rows(const std::string& format_path, const std::string& file,
                                  const ImageFileSpec& spec, int band, const ImageRows& fill,
                                  std::string* error) {
-  auto out = OIIO::ImageOutput::create(format_path);
-  if (!out) return ImageWrite::kNoWriter;
-  const OIIO::TypeDesc type =
-      spec.format == PixelFormat::kFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-  OIIO::ImageSpec s(spec.width, spec.height, spec.channels, type);
-  for (const auto& [name, value] : spec.attributes) s.attribute(name, value);
-  if (!out->open(file, s)) {
-    *error = out->geterror();
-    return ImageWrite::kFailed;
-  }
-  std::vector<uint8_t> rows(static_cast<size_t>(band) * s.scanline_bytes());
+  OIIO::TypeDesc type;
+  ImageWrite result = ImageWrite::kOk;
+  const auto out = open_output(format_path, file, spec, &type, &result, error);
+  if (!out) return result;
+  const size_t row_bytes = static_cast<size_t>(spec.width) * spec.channels * type.size();
+  std::vector<uint8_t> rows(static_cast<size_t>(band) * row_bytes);
   for (int y = 0; y < spec.height; y += band) {
     const int n = std::min(band, spec.height - y);
     fill(y, n, rows.data());
-    if (!out->write_scanlines(y, y + n, 0, type, rows.data())) {
-      *error = out->geterror();
-      return ImageWrite::kFailed;
-    }
+    if (!out->write_scanlines(y, y + n, 0, type, rows.data())) return failed(*out, error);
   }
-  if (!out->close()) {
-    *error = out->geterror();
-    return ImageWrite::kFailed;
-  }
+  if (!out->close()) return failed(*out, error);
   return ImageWrite::kOk;
 }
 
