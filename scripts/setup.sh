@@ -12,6 +12,7 @@ PACKAGES=(
   libglm-dev libopenimageio-dev openimageio-tools    # ideal models, image I/O, idiff
   libcli11-dev nlohmann-json3-dev libfmt-dev         # texsim
   libgtest-dev libbenchmark-dev                      # tests, benchmarks
+  libocct-modeling-data-dev libtbb-dev               # NURBS test reference (OCCT links libtbb.so)
   yosys berkeley-abc                                 # synthesis check, cell counts
   gtkwave                                            # viewing mismatch waveforms
   python3 python3-matplotlib python3-numpy           # plots
