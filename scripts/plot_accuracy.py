@@ -36,6 +36,11 @@ SPECS = {
         cells=["enc cells", "defl cells", "coord cells"],
         cells_name="cells: encoder + deflection + coordinates", time="cyc/px",
         time_name="cycles per bumped pixel", invert=False),
+    "mipgen": dict(
+        label="carry", default="20", error="max abs err",
+        error_name="largest error of any level (8-bit levels)", cells=["logic"],
+        cells_name="logic cells (FIFOs as RAM macros)", time="FIFO bits",
+        time_name="line FIFO bits", invert=False),
     "clipmap": dict(
         label="tile,rule", default="64 per-sample", error="mean err",
         error_name="mean error vs every level resident (8-bit levels)", cells=["resident texels"],

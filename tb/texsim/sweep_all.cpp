@@ -18,6 +18,7 @@
 #include "texsim/sweep_deflection.hpp"
 #include "texsim/sweep_footprint.hpp"
 #include "texsim/sweep_footprint_setup.hpp"
+#include "texsim/sweep_mipgen.hpp"
 #include "texsim/sweep_perlin.hpp"
 #include "texsim/sweep_support.hpp"
 
@@ -71,6 +72,14 @@ const Section kSections[] = {
      "golden time per sample, the noise unit's cells and depth (its RTL verilated at 8,8,8,4 "
      "only). Cycles per sample: below, measured on the RTL.",
      "perlin.md"},
+    {"Mipmap generator (000 §12)", "mipgen",
+     "Settings: the carry, how many fraction bits of each level's unrounded 2x2 sums the line "
+     "FIFOs keep for the next level (0: every level rounded from the rounded one below, the old "
+     "rule; 20: every sum exact, the default). Error: each level of golden's pyramid against the "
+     "exact box mean of level 0 (the independent ideal pyramid), R, G and B of the photo-like "
+     "field at 512 x 512, mean (signed) / max abs in 8-bit levels. Cost: FIFO and hold bits at "
+     "1024 x 1024 (a formula), cells, logic (FIFOs as RAM macros) and depth of tmu_mipgen.",
+     "texram.md"},
     {"Clip-map (003)", "clipmap",
      "Settings: the tile side and the substitution rule, on the fly-over (scenes/flyover.json) "
      "over its terrain at 1024 x 1024, so that the same frames can be rendered with every level "
@@ -108,6 +117,11 @@ void run_block_sweeps(const SweepAllArgs& args, const fs::path& data) {
   perlin.synth = args.synth;
   perlin.markdown = md("perlin");
   sweep_perlin(perlin);
+
+  MipgenSweepArgs mipgen;
+  mipgen.synth = args.synth;
+  mipgen.markdown = md("mipgen");
+  sweep_mipgen(mipgen);
 
   ClipmapSweepArgs clip;
   clip.synth = args.synth;
@@ -156,6 +170,24 @@ std::string display_path(const std::string& path) {
   return rel.empty() || *rel.begin() == ".." ? path : rel.string();
 }
 
+// What follows a section's table and plot: its further tables.
+std::string section_tail(const std::string& stem, const fs::path& data) {
+  if (stem == "perlin") {
+    return "### Procedural noise: the fractal unit's configurations\n\n" +
+           read_file(data / "perlin_configs.md") + "\n";
+  }
+  if (stem == "clipmap") {
+    return "### Clip-map: texels loaded against the camera's speed (every k-th frame), and the "
+           "hardware\n\n" +
+           read_file(data / "clipmap_speed.md") + "\n" + read_file(data / "clipmap_hardware.md") +
+           "\n003's configuration, 32k x 32k with 1k tiles, by formula: 6.64 M of 1.432 G texels "
+           "resident (0.46 %, 99.5 % saved; the patent writes about 6 M of 1.365 G, 99.6 %, its G "
+           "being 2^30). Rendered as a long run: `texsim sweep clipmap --log2-virtual 15 "
+           "--settings 10` (docs/clipmap.md).\n\n";
+  }
+  return "";
+}
+
 std::string document(const SweepAllArgs& args, const fs::path& data, const std::string& scene,
                      const RunContext& run) {
   const std::string rel = data.filename().string();
@@ -180,17 +212,10 @@ std::string document(const SweepAllArgs& args, const fs::path& data, const std::
     doc +=
         fmt::format("## {}\n\n{} Reading: [{}]({}).\n\n{}\n![{}]({}/{}.png)\n\n", s.title, s.about,
                     s.doc, s.doc, read_file(data / (s.stem + ".md")), s.title, rel, s.stem);
+    doc += section_tail(s.stem, data);
   }
-  doc += "### Procedural noise: the fractal unit's configurations\n\n" +
-         read_file(data / "perlin_configs.md") +
-         "\n### Clip-map: texels loaded against the camera's speed (every k-th frame), and the "
-         "hardware\n\n" +
-         read_file(data / "clipmap_speed.md") + "\n" + read_file(data / "clipmap_hardware.md") +
-         "\n003's configuration, 32k x 32k with 1k tiles, by formula: 6.64 M of 1.432 G texels "
-         "resident (0.46 %, 99.5 % saved; the patent writes about 6 M of 1.365 G, 99.6 %, its G "
-         "being 2^30). Rendered as a long run: `texsim sweep clipmap --log2-virtual 15 "
-         "--settings 10` (docs/clipmap.md).\n" +
-         "\n## CCC decoder and low-cost unit (000 §3-4)\n\nNo width settings: the decoder is "
+  doc +=
+         "## CCC decoder and low-cost unit (000 §3-4)\n\nNo width settings: the decoder is "
          "exact (a CLUT look-up) and the low-cost unit's weights are the 8 bits §4 gives them. "
          "Their figures: [ccc.md](ccc.md).\n";
   return doc;
