@@ -472,4 +472,19 @@ tmu_mutant(material_fire series FILE perlin/tmu_material_fire.sv
   FROM "localparam int unsigned Terms   = 12;" TO "localparam int unsigned Terms   = 3;"
   WHY "e^(-1/32) from three terms of its series: 20 of the 512 entries one off (the first k = 3)")
 
+# Tau unit (004: EP0637814 claims 4-6, 15): (s, t) -> (u, v), r1, r2, lambda through a node grid.
+tmu_block(tau)
+tmu_mutant(tau extrapolate FILE tau/tmu_tau_weights.sv
+  FROM "        c[2] = c[2] - c[0];" TO "        c[2] = c[2] + c[0];"
+  WHY "the spline's node -1 is extrapolated as 2 n(0) + n(1) instead of 2 n(0) - n(1): wrong u, v in the first cell")
+tmu_mutant(tau weight FILE tau/tmu_tau_weights.sv
+  FROM "      c[3] = x3 - x2;" TO "      c[3] = x3 - x2 + w_t'(1);"
+  WHY "the last Catmull-Rom weight is one unit of 2^-13 too large (the weights no longer sum to one)")
+tmu_mutant(tau ordering FILE tau/tmu_tau.sv
+  FROM "assign node_ready_o = state_q == Idle;" TO "assign node_ready_o = 1'b1;"
+  WHY "a node write is taken while a sample reads the memory (it overtakes the sample, or its address replaces the read's)")
+tmu_mutant(tau unreset FILE tau/tmu_tau.sv EXPECT x-leak
+  FROM "      state_q     <= Idle;\n" TO ""
+  WHY "the state starts where its flops happen to be (a random step of a sample that never came)")
+
 tmu_write_block_tables()

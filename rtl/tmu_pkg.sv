@@ -285,6 +285,31 @@ package tmu_pkg;
   localparam int unsigned FireEntryFrac = 12;
   typedef logic [FireEntryW-1:0] fire_entry_t;
 
+  // PcCoord: SQ8.16, tau unit: a parameter coordinate s or t in tau-grid cells (0 .. cells), carried in a fragment's TexCoord port (same width)
+  localparam int unsigned PcCoordW = 24;
+  localparam int unsigned PcCoordFrac = 16;
+  typedef logic signed [PcCoordW-1:0] pc_coord_t;
+
+  // PcDeriv: SQ8.16, tau unit: ds or dt per pixel in grid cells, carried in a fragment's TexDeriv port
+  localparam int unsigned PcDerivW = 24;
+  localparam int unsigned PcDerivFrac = 16;
+  typedef logic signed [PcDerivW-1:0] pc_deriv_t;
+
+  // TauCells: UQ5.0, tau unit: the grid's cells along s or t, 1..16 (0 acts as 1, above 16 as 16)
+  localparam int unsigned TauCellsW = 5;
+  localparam int unsigned TauCellsFrac = 0;
+  typedef logic [TauCellsW-1:0] tau_cells_t;
+
+  // TauNodeAddr: UQ9.0, tau unit: a node's address i + 17 j (i along s, 0..cells_s; j along t), 0..288
+  localparam int unsigned TauNodeAddrW = 9;
+  localparam int unsigned TauNodeAddrFrac = 0;
+  typedef logic [TauNodeAddrW-1:0] tau_node_addr_t;
+
+  // TauInterp: UQ1.0, tau unit: 0 linear (claim 5), 1 Catmull-Rom spline (claim 6)
+  localparam int unsigned TauInterpW = 1;
+  localparam int unsigned TauInterpFrac = 0;
+  typedef logic [TauInterpW-1:0] tau_interp_t;
+
   // largest texture side in texels
   localparam int unsigned MaxTexSize = 4096;
 
@@ -350,6 +375,9 @@ package tmu_pkg;
 
   // byte planes of a texel (true colour R G B A) or of a CCC block word
   localparam int unsigned Planes = 4;
+
+  // tau unit: the most grid cells along s or t (17 x 17 nodes)
+  localparam int unsigned TauMaxCells = 16;
 
   // verilator lint_on UNUSEDPARAM
 

@@ -168,12 +168,19 @@ def macro(name, rows):
 
 
 def comment(text):
-    """text as // lines of at most 100 columns."""
+    """text as // lines of at most 100 columns. No line starts with the word Verilator:
+    Verilator reads `// verilator ...` as a directive (and stops on one it does not know), so
+    such a word takes the word before it onto its line."""
     out, line = [], "//"
     for word in text.split():
         if len(line) + 1 + len(word) > 100:
-            out.append(line)
-            line = "//"
+            head, _, last = line.rpartition(" ")
+            if word.lower().startswith("verilator") and head != "//":
+                out.append(head)
+                line = "// " + last
+            else:
+                out.append(line)
+                line = "//"
         line += " " + word
     out.append(line)
     return "\n".join(out) + "\n"

@@ -27,6 +27,7 @@ definitions=(
   texram/source_texels.hpp            # what a texture was made from: planes, CLUT, flags
   texram/sampler_config.hpp           # the sampler's enums and registers, RGBA8888 packing
   footprint/q_rule.hpp                # which measure of the footprint's width q
+  tau/tau_definition.hpp              # the tau grid's shape, the interpolations' names, the extrapolation rule
 )
 
 listed() {  # is $1 one of the remaining arguments
