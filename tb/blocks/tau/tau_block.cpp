@@ -48,7 +48,7 @@ int64_t uniform(std::mt19937_64& rng, int64_t lo, int64_t hi) {
 
 int32_t clamp_node(double texels) {
   return static_cast<int32_t>(
-      std::clamp(std::llround(texels * kTexel), int64_t{kNodeMin}, int64_t{kNodeMax}));
+      std::clamp<int64_t>(std::llround(texels * kTexel), kNodeMin, kNodeMax));
 }
 
 uint32_t node_addr(int i, int j) { return static_cast<uint32_t>(i + tau::kStride * j); }
