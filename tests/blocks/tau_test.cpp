@@ -3,8 +3,6 @@
 // within the error bounds derived in docs/tau.md, affine grids reproduced exactly by both
 // interpolations, the linear mode's values on node lines, lambda as the footprint setup's
 // log2 |r_max|, the write-ordering rule through every engine, and the cycles per sample.
-#include "tau/tau_unit.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,6 +17,7 @@
 #include "blocks/tau/tau_block.hpp"
 #include "footprint/footprint.hpp"
 #include "tau/tau_ideal.hpp"
+#include "tau/tau_unit.hpp"
 
 namespace tmu::tb {
 namespace {
@@ -30,7 +29,8 @@ constexpr double kTexel = 256.0;   // raw TexCoord per texel
 tau::TauUnit unit_of(const TauGrid& g) {
   tau::TauUnit unit;
   unit.configure(g.config);
-  const int cs = tau::effective_cells(g.config.cells_s), ct = tau::effective_cells(g.config.cells_t);
+  const int cs = tau::effective_cells(g.config.cells_s),
+            ct = tau::effective_cells(g.config.cells_t);
   for (int j = 0; j <= ct; ++j) {
     for (int i = 0; i <= cs; ++i) {
       const auto k = static_cast<size_t>(i + (cs + 1) * j);
@@ -89,17 +89,20 @@ TEST(TauTest, GoldenAgainstIdeal) {
   int checked = 0, lambda_checked = 0;
   for (int g = 0; g < 80; ++g) {
     const Interp interp = g % 2 ? Interp::kSpline : Interp::kLinear;
-    const TauGrid grid = draw_tau_grid(rng, kinds[static_cast<size_t>(g / 2) % kinds.size()],
-                                       1 + static_cast<int>(rng() % 16),
-                                       1 + static_cast<int>(rng() % 16), interp);
+    const TauGrid grid =
+        draw_tau_grid(rng, kinds[static_cast<size_t>(g / 2) % kinds.size()],
+                      1 + static_cast<int>(rng() % 16), 1 + static_cast<int>(rng() % 16), interp);
     const tau::TauUnit unit = unit_of(grid);
     const tau::GridD ideal = ideal_grid(grid);
     const double kw = interp == Interp::kSpline ? 17.6 : 0.0;
-    const double jt = interp == Interp::kSpline ? 12.0 : 4.0, jw = interp == Interp::kSpline ? 28.6 : 0.0;
+    const double jt = interp == Interp::kSpline ? 12.0 : 4.0,
+                 jw = interp == Interp::kSpline ? 28.6 : 0.0;
     for (int n = 0; n < 2000; ++n) {
       tau::Request r;
-      r.s = static_cast<int32_t>(rng() % static_cast<uint64_t>((ideal.cells_s + 1) * 65536)) - 32768;
-      r.t = static_cast<int32_t>(rng() % static_cast<uint64_t>((ideal.cells_t + 1) * 65536)) - 32768;
+      r.s =
+          static_cast<int32_t>(rng() % static_cast<uint64_t>((ideal.cells_s + 1) * 65536)) - 32768;
+      r.t =
+          static_cast<int32_t>(rng() % static_cast<uint64_t>((ideal.cells_t + 1) * 65536)) - 32768;
       const auto deriv = [&rng] { return static_cast<int32_t>(rng() % 8192) - 4096; };
       r.ds_dx = deriv();
       r.dt_dx = deriv();
@@ -107,9 +110,9 @@ TEST(TauTest, GoldenAgainstIdeal) {
       r.dt_dy = deriv();
       const tau::Trace tr = unit.trace(r);
       if (tr.uv_saturated || tr.j_saturated || tr.r_saturated) continue;
-      const tau::IdealResult id = tau::ideal_sample(ideal, interp, r.s / kCell, r.t / kCell,
-                                                    r.ds_dx / kCell, r.dt_dx / kCell,
-                                                    r.ds_dy / kCell, r.dt_dy / kCell);
+      const tau::IdealResult id =
+          tau::ideal_sample(ideal, interp, r.s / kCell, r.t / kCell, r.ds_dx / kCell,
+                            r.dt_dx / kCell, r.ds_dy / kCell, r.dt_dy / kCell);
       const tau::MapD m = tau::ideal_map(ideal, interp, r.s / kCell, r.t / kCell);
       const double ru = stencil_range(unit, tr, false), rv = stencil_range(unit, tr, true);
       const double e12 = std::ldexp(1.0, -12), e13 = std::ldexp(1.0, -13);
@@ -172,9 +175,12 @@ TEST(TauTest, AffineGridsExactInBothModes) {
     TauGrid grid;
     grid.config = {1 + static_cast<int>(rng() % 16), 1 + static_cast<int>(rng() % 16), interp};
     const int cs = grid.config.cells_s, ct = grid.config.cells_t;
-    const int64_t u0 = static_cast<int64_t>(rng() % 20001) - 10000, v0 = static_cast<int64_t>(rng() % 20001) - 10000;
-    const int64_t a = static_cast<int64_t>(rng() % 40001) - 20000, b = static_cast<int64_t>(rng() % 40001) - 20000;
-    const int64_t c = static_cast<int64_t>(rng() % 40001) - 20000, d = static_cast<int64_t>(rng() % 40001) - 20000;
+    const int64_t u0 = static_cast<int64_t>(rng() % 20001) - 10000,
+                  v0 = static_cast<int64_t>(rng() % 20001) - 10000;
+    const int64_t a = static_cast<int64_t>(rng() % 40001) - 20000,
+                  b = static_cast<int64_t>(rng() % 40001) - 20000;
+    const int64_t c = static_cast<int64_t>(rng() % 40001) - 20000,
+                  d = static_cast<int64_t>(rng() % 40001) - 20000;
     for (int j = 0; j <= ct; ++j) {
       for (int i = 0; i <= cs; ++i) {
         grid.u.push_back(static_cast<int32_t>(u0 + a * i + b * j));
@@ -188,7 +194,8 @@ TEST(TauTest, AffineGridsExactInBothModes) {
       r.t = static_cast<int32_t>(rng() % static_cast<uint64_t>((ct + 2) * 65536)) - 65536;
       const tau::Trace tr = unit.trace(r);
       // The truncated coordinate in units of 2^-12 cell.
-      const int64_t sq = int64_t{tr.s.cell} * 4096 + tr.s.x, tq = int64_t{tr.t.cell} * 4096 + tr.t.x;
+      const int64_t sq = int64_t{tr.s.cell} * 4096 + tr.s.x,
+                    tq = int64_t{tr.t.cell} * 4096 + tr.t.x;
       ASSERT_EQ(tr.sum_u, (u0 << 26) + ((a * sq + b * tq) << 14)) << g << " " << n;
       ASSERT_EQ(tr.sum_v, (v0 << 26) + ((c * sq + d * tq) << 14)) << g << " " << n;
       ASSERT_EQ(tr.jus, 4 * a);  // SQ18.10 texels per cell of a step in SQ16.8
@@ -240,8 +247,9 @@ TEST(TauTest, LambdaIsTheFootprintSetupsLog2) {
       const int shift = static_cast<int>(rng() % 23);
       return static_cast<int32_t>(rng() % (uint64_t{1} << shift)) * (rng() % 2 ? -1 : 1);
     };
-    const tau::Result r = unit.sample({static_cast<int32_t>(rng() % (4 << 16)),
-                                       static_cast<int32_t>(rng() % (4 << 16)), d(), d(), d(), d()});
+    const tau::Result r =
+        unit.sample({static_cast<int32_t>(rng() % (4 << 16)),
+                     static_cast<int32_t>(rng() % (4 << 16)), d(), d(), d(), d()});
     const auto mag = [](int32_t c) { return static_cast<uint64_t>(c < 0 ? -int64_t{c} : c); };
     const uint64_t largest = std::max({mag(r.r1u), mag(r.r1v), mag(r.r2u), mag(r.r2v)});
     const int sh = std::max(0, static_cast<int>(std::bit_width(largest)) - 12);
@@ -291,7 +299,8 @@ TEST(TauTest, WritesAndSamplesInOrder) {
 TEST(TauTest, CyclesPerSample) {
   const TauBlock block;
   std::mt19937_64 rng(16);
-  for (const auto& [interp, cycles] : {std::pair{Interp::kLinear, 11u}, std::pair{Interp::kSpline, 23u}}) {
+  for (const auto& [interp, cycles] :
+       {std::pair{Interp::kLinear, 11u}, std::pair{Interp::kSpline, 23u}}) {
     const TauGrid grid = draw_tau_grid(rng, TauGridKind::kSmooth, 5, 5, interp);
     std::vector<Txn> items = tau_load_items(grid);
     for (int k = 0; k < 100; ++k) {
