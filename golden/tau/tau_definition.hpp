@@ -23,7 +23,7 @@ namespace tmu::tau {
 enum class Interp : uint8_t { kLinear = 0, kSpline = 1 };
 
 inline constexpr int kMaxCells = 16;
-inline constexpr int kStride = kMaxCells + 1;          // 17: nodes of the widest row
-inline constexpr int kNodes = kStride * kStride;       // 289 addresses, 0 .. 288
+inline constexpr int kStride = kMaxCells + 1;     // 17: nodes of the widest row
+inline constexpr int kNodes = kStride * kStride;  // 289 addresses, 0 .. 288
 
 }  // namespace tmu::tau

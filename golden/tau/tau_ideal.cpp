@@ -52,8 +52,9 @@ double node(const GridD& g, const std::vector<double>& n, int i, int j) {
 MapD ideal_map(const GridD& g, Interp interp, double s, double t) {
   const size_t nodes = static_cast<size_t>(g.cells_s + 1) * static_cast<size_t>(g.cells_t + 1);
   if (g.cells_s < 1 || g.cells_t < 1 || g.u.size() != nodes || g.v.size() != nodes) {
-    throw std::invalid_argument("tau::ideal_map: a grid needs cells >= 1 and (cells_s + 1) "
-                                "(cells_t + 1) nodes of u and of v");
+    throw std::invalid_argument(
+        "tau::ideal_map: a grid needs cells >= 1 and (cells_s + 1) "
+        "(cells_t + 1) nodes of u and of v");
   }
   const Stencil a = stencil(s, g.cells_s, interp), b = stencil(t, g.cells_t, interp);
   MapD m;

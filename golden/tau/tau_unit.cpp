@@ -14,8 +14,8 @@ namespace fmts = tmu::formats;
 
 constexpr int kCoordFrac = fmts::kPcCoord.frac_bits;  // 16
 constexpr int kWeightFrac = 12;                       // x, x2, x3
-constexpr int32_t kOne = int32_t{1} << 13;             // a weight of one
-constexpr int kJacobianBits = 28;                      // SQ18.10
+constexpr int32_t kOne = int32_t{1} << 13;            // a weight of one
+constexpr int kJacobianBits = 28;                     // SQ18.10
 
 int64_t saturate(int64_t value, int bits, bool& saturated) {
   const int64_t hi = (int64_t{1} << (bits - 1)) - 1, lo = -(int64_t{1} << (bits - 1));

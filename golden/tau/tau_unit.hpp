@@ -89,11 +89,11 @@ int effective_cells(int cells);
 // What a sample computes on its way (for tests and coverage).
 struct Trace {
   AxisWeights s, t;
-  int64_t sum_u = 0, sum_v = 0;          // U, V
-  int64_t sum_us = 0, sum_vs = 0;        // Us, Vs
-  int64_t sum_ut = 0, sum_vt = 0;        // Ut, Vt
+  int64_t sum_u = 0, sum_v = 0;                // U, V
+  int64_t sum_us = 0, sum_vs = 0;              // Us, Vs
+  int64_t sum_ut = 0, sum_vt = 0;              // Ut, Vt
   int32_t jus = 0, jvs = 0, jut = 0, jvt = 0;  // SQ18.10 texels per cell, saturated
-  bool extrapolated = false;             // the stencil reached beyond the grid
+  bool extrapolated = false;                   // the stencil reached beyond the grid
   bool uv_saturated = false, j_saturated = false, r_saturated = false;
   Result result;
 };

@@ -36,8 +36,8 @@ uint64_t bits(int32_t raw, const fx::Format& f) {
 }
 
 int32_t signed_field(uint64_t field, const fx::Format& f) {
-  return static_cast<int32_t>(fx::fit(static_cast<int64_t>(field & ((uint64_t{1} << f.width()) - 1)),
-                                      f, fx::Overflow::kWrap));
+  return static_cast<int32_t>(fx::fit(
+      static_cast<int64_t>(field & ((uint64_t{1} << f.width()) - 1)), f, fx::Overflow::kWrap));
 }
 
 // Uniform in lo..hi (inclusive) from the generator's raw output (no std distributions: the
@@ -48,7 +48,7 @@ int64_t uniform(std::mt19937_64& rng, int64_t lo, int64_t hi) {
 
 int32_t clamp_node(double texels) {
   return static_cast<int32_t>(
-      std::clamp(std::llround(texels * kTexel), int64_t{kNodeMin}, int64_t{kNodeMax}));
+      std::clamp<int64_t>(std::llround(texels * kTexel), kNodeMin, kNodeMax));
 }
 
 uint32_t node_addr(int i, int j) { return static_cast<uint32_t>(i + tau::kStride * j); }
@@ -92,9 +92,12 @@ int32_t draw_deriv(std::mt19937_64& rng) {
   const uint64_t r = rng() % 16;
   int64_t m = 0;
   if (r == 0) return 0;
-  if (r == 1) m = uniform(rng, 1, 255);
-  else if (r == 2) m = uniform(rng, 0, int64_t{kPcMax});
-  else m = uniform(rng, kCell / 200, kCell / 2);
+  if (r == 1)
+    m = uniform(rng, 1, 255);
+  else if (r == 2)
+    m = uniform(rng, 0, int64_t{kPcMax});
+  else
+    m = uniform(rng, kCell / 200, kCell / 2);
   return static_cast<int32_t>(rng() % 2 ? -m : m);
 }
 
@@ -105,7 +108,8 @@ int32_t draw_coord(std::mt19937_64& rng, int cells) {
   if (r == 0) return static_cast<int32_t>(uniform(rng, kPcMin, kPcMax));
   if (r < 3) return static_cast<int32_t>(uniform(rng, 0, cells) * kCell);  // a node line
   if (r < 5) return static_cast<int32_t>(uniform(rng, -kCell, 0));         // below the grid
-  if (r < 7) return static_cast<int32_t>(uniform(rng, int64_t{cells} * kCell, (cells + 1) * int64_t{kCell}));
+  if (r < 7)
+    return static_cast<int32_t>(uniform(rng, int64_t{cells} * kCell, (cells + 1) * int64_t{kCell}));
   return static_cast<int32_t>(uniform(rng, 0, int64_t{cells} * kCell));
 }
 
@@ -170,7 +174,8 @@ Txn tau_sample_item(const tau::Request& r) {
 
 std::vector<Txn> tau_load_items(const TauGrid& g) {
   std::vector<Txn> items = {tau_config_item(g.config)};
-  const int cs = tau::effective_cells(g.config.cells_s), ct = tau::effective_cells(g.config.cells_t);
+  const int cs = tau::effective_cells(g.config.cells_s),
+            ct = tau::effective_cells(g.config.cells_t);
   for (int j = 0; j <= ct; ++j) {
     for (int i = 0; i <= cs; ++i) {
       const auto n = static_cast<size_t>(i + (cs + 1) * j);
@@ -189,9 +194,12 @@ tau::Request tau_request_of(const Txn& t) {
 
 tau::Result tau_result_of(const Txn& o) {
   const fx::Format c = fmts::kTexCoord, d = fmts::kTexDeriv;
-  return {signed_field(o.f[D::out_u], c),   signed_field(o.f[D::out_v], c),
-          signed_field(o.f[D::out_r1u], d), signed_field(o.f[D::out_r1v], d),
-          signed_field(o.f[D::out_r2u], d), signed_field(o.f[D::out_r2v], d),
+  return {signed_field(o.f[D::out_u], c),
+          signed_field(o.f[D::out_v], c),
+          signed_field(o.f[D::out_r1u], d),
+          signed_field(o.f[D::out_r1v], d),
+          signed_field(o.f[D::out_r2u], d),
+          signed_field(o.f[D::out_r2v], d),
           signed_field(o.f[D::out_lambda], fmts::kLod)};
 }
 
@@ -209,26 +217,33 @@ TauGrid draw_tau_grid(std::mt19937_64& rng, TauGridKind kind, int cells_s, int c
   const double shear = static_cast<double>(uniform(rng, -100, 100)) / 400;
   const double amp = static_cast<double>(uniform(rng, 0, 100)) / 200;
   const double ph = static_cast<double>(uniform(rng, 0, 628)) / 100;
-  const int64_t u0 = uniform(rng, -64 * kTexel, 64 * kTexel), v0 = uniform(rng, -64 * kTexel, 64 * kTexel);
+  const int64_t u0 = uniform(rng, -64 * kTexel, 64 * kTexel),
+                v0 = uniform(rng, -64 * kTexel, 64 * kTexel);
   const auto du = static_cast<int64_t>(span_u * kTexel) + uniform(rng, -255, 255);
   const auto dv = static_cast<int64_t>(span_v * kTexel) + uniform(rng, -255, 255);
   const auto duv = static_cast<int64_t>(shear * span_u * kTexel);
-  const double fold = uniform(rng, 0, cs * 4) / 4.0;  // where s's direction reverses
+  const double fold =
+      static_cast<double>(uniform(rng, 0, cs * 4)) / 4.0;  // where s's direction reverses
   for (int j = 0; j <= ct; ++j) {
     for (int i = 0; i <= cs; ++i) {
       const auto k = static_cast<size_t>(i + (cs + 1) * j);
       switch (kind) {
         case TauGridKind::kAffine:  // integer steps: exactly affine
-          g.u[k] = static_cast<int32_t>(std::clamp<int64_t>(u0 + i * du + j * duv, kNodeMin, kNodeMax));
-          g.v[k] = static_cast<int32_t>(std::clamp<int64_t>(v0 - i * duv / 2 + j * dv, kNodeMin, kNodeMax));
+          g.u[k] =
+              static_cast<int32_t>(std::clamp<int64_t>(u0 + i * du + j * duv, kNodeMin, kNodeMax));
+          g.v[k] = static_cast<int32_t>(
+              std::clamp<int64_t>(v0 - i * duv / 2 + j * dv, kNodeMin, kNodeMax));
           break;
         case TauGridKind::kSmooth:
-          g.u[k] = clamp_node(u0 / 256.0 + span_u * (i + amp * std::sin(0.9 * j + ph)) + shear * span_u * j);
-          g.v[k] = clamp_node(v0 / 256.0 + span_v * (j + amp * std::sin(1.3 * i - ph)));
+          g.u[k] = clamp_node(static_cast<double>(u0) / kTexel +
+                              span_u * (i + amp * std::sin(0.9 * j + ph)) + shear * span_u * j);
+          g.v[k] = clamp_node(static_cast<double>(v0) / kTexel +
+                              span_v * (j + amp * std::sin(1.3 * i - ph)));
           break;
         case TauGridKind::kFolded:  // u runs back over itself past s = fold
-          g.u[k] = clamp_node(u0 / 256.0 + span_u * (fold - std::abs(i - fold)) + shear * span_u * j);
-          g.v[k] = clamp_node(v0 / 256.0 + span_v * j + amp * span_v * i);
+          g.u[k] = clamp_node(static_cast<double>(u0) / kTexel +
+                              span_u * (fold - std::abs(i - fold)) + shear * span_u * j);
+          g.v[k] = clamp_node(static_cast<double>(v0) / kTexel + span_v * j + amp * span_v * i);
           break;
         case TauGridKind::kRandom:
           g.u[k] = static_cast<int32_t>(uniform(rng, -(int64_t{1} << 20), int64_t{1} << 20));
@@ -270,21 +285,22 @@ std::vector<Txn> TauBlock::directed_items() const {
     for (int32_t s : {0, S, S / 2, kCell, S - 1, 1}) {
       for (int32_t t : {0, T, T / 2, kCell, T - 1}) sample(s, t);
     }
-    for (int i = 0; i <= cs; ++i) sample(i * kCell, (ct * kCell) / 3);       // node lines
-    for (int i = 0; i < cs; ++i) sample(i * kCell + kCell / 2, kCell / 3);   // cell centres
-    sample(-1, -1);                                                          // just below
-    sample(S + 1, T + 1);                                                    // just beyond
+    for (int i = 0; i <= cs; ++i) sample(i * kCell, (ct * kCell) / 3);      // node lines
+    for (int i = 0; i < cs; ++i) sample(i * kCell + kCell / 2, kCell / 3);  // cell centres
+    sample(-1, -1);                                                         // just below
+    sample(S + 1, T + 1);                                                   // just beyond
     sample(-kCell / 2, T / 2);
     sample(S / 2, T + kCell / 2);
     sample(kPcMin, kPcMax);
     sample(kPcMax, kPcMin);
-    sample(S / 3, T / 3, 0, 0, 0, 0);                         // zero derivatives
-    sample(S / 3, T / 3, kPcMax, kPcMax, kPcMin, kPcMax);     // r saturates
-    sample(S / 3, T / 3, 1, 0, 0, -1);                        // the smallest derivatives
+    sample(S / 3, T / 3, 0, 0, 0, 0);                      // zero derivatives
+    sample(S / 3, T / 3, kPcMax, kPcMax, kPcMin, kPcMax);  // r saturates
+    sample(S / 3, T / 3, 1, 0, 0, -1);                     // the smallest derivatives
     sample(S / 5, T / 7, kCell, -kCell / 3, kCell / 5, kCell / 2);
   };
   const auto grid = [&](TauGridKind kind, int cs, int ct, Interp interp) {
-    for (const Txn& t : tau_load_items(draw_tau_grid(rng, kind, cs, ct, interp))) items.push_back(t);
+    for (const Txn& t : tau_load_items(draw_tau_grid(rng, kind, cs, ct, interp)))
+      items.push_back(t);
     walk(tau::effective_cells(cs), tau::effective_cells(ct));
   };
   for (const Interp interp : {Interp::kLinear, Interp::kSpline}) {
@@ -319,20 +335,23 @@ std::vector<Txn> TauBlock::directed_items() const {
 std::vector<Txn> TauBlock::random_items(std::mt19937_64& rng, size_t count) const {
   std::vector<Txn> items;
   items.reserve(count);
-  int cs = tau::effective_cells(first_.config.cells_s), ct = tau::effective_cells(first_.config.cells_t);
+  int cs = tau::effective_cells(first_.config.cells_s),
+      ct = tau::effective_cells(first_.config.cells_t);
   size_t next_batch = kBatch;
   while (items.size() < count) {
     if (items.size() >= next_batch) {  // a new grid, as a driver between batches
       next_batch += kBatch;
       const Interp interp = rng() % 2 ? Interp::kSpline : Interp::kLinear;
-      const TauGrid g = draw_tau_grid(rng, draw_kind(rng), draw_cells(rng), draw_cells(rng), interp);
+      const TauGrid g =
+          draw_tau_grid(rng, draw_kind(rng), draw_cells(rng), draw_cells(rng), interp);
       for (const Txn& t : tau_load_items(g)) items.push_back(t);
       cs = g.config.cells_s;
       ct = g.config.cells_t;
       continue;
     }
     if (rng() % 200 == 0) {  // now and then a node rewritten between samples
-      const int i = static_cast<int>(uniform(rng, 0, cs)), j = static_cast<int>(uniform(rng, 0, ct));
+      const int i = static_cast<int>(uniform(rng, 0, cs)),
+                j = static_cast<int>(uniform(rng, 0, ct));
       items.push_back(tau_node_item(node_addr(i, j),
                                     static_cast<int32_t>(uniform(rng, -(1 << 20), 1 << 20)),
                                     static_cast<int32_t>(uniform(rng, -(1 << 20), 1 << 20))));
@@ -347,10 +366,10 @@ std::vector<Txn> TauBlock::random_items(std::mt19937_64& rng, size_t count) cons
 std::unique_ptr<Model> TauBlock::golden() const { return std::make_unique<Golden>(); }
 
 std::vector<std::string> TauBlock::coverage_cases() const {
-  return {kLinear,   kSpline,      kCells1,     kCells16,    kCellsOdd,       kNodeLine,
-          kAtCells,  kBelow,       kBeyond,     kExtrapolated, kCorner,       kZeroDeriv,
-          kRSaturated, kUvSaturated, kFolded,   kPositiveLambda, kNegativeLambda, kAfterWrite,
-          kCellsClamped};
+  return {kLinear,         kSpline,         kCells1,     kCells16,     kCellsOdd,
+          kNodeLine,       kAtCells,        kBelow,      kBeyond,      kExtrapolated,
+          kCorner,         kZeroDeriv,      kRSaturated, kUvSaturated, kFolded,
+          kPositiveLambda, kNegativeLambda, kAfterWrite, kCellsClamped};
 }
 
 void TauBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&, Coverage& cov) const {
@@ -367,8 +386,8 @@ void TauBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&, Co
       c.cells_t = static_cast<int>(x.f[D::cfg_cells_t]);
       c.interp = x.f[D::cfg_interp] != 0 ? Interp::kSpline : Interp::kLinear;
       cover_unit_.configure(c);
-      cover_clamped_ = c.cells_s != cover_unit_.config().cells_s ||
-                       c.cells_t != cover_unit_.config().cells_t;
+      cover_clamped_ =
+          c.cells_s != cover_unit_.config().cells_s || c.cells_t != cover_unit_.config().cells_t;
     } else if (x.f[0] == D::op_node) {
       cover_unit_.write(static_cast<uint32_t>(x.f[D::node_addr]),
                         signed_field(x.f[D::node_u], fmts::kTexCoord),
