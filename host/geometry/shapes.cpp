@@ -1,38 +1,16 @@
-// The built-in shapes of scenes/README.md, tessellated in object space. Surfaces are built
-// as grids of quads; each triangle is turned so that its geometric normal agrees with its
-// vertices' normals, which makes every shape counter-clockwise seen from outside by
-// construction rather than by getting each winding right by hand.
+// The built-in shapes of scenes/README.md, tessellated in object space as grids of quads
+// (geometry/mesh_builder.hpp turns each triangle to face outward).
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
-#include "geometry/mesh.hpp"
+#include "geometry/mesh_builder.hpp"
+#include "nurbs/nurbs_mesh.hpp"
 
 namespace tmu::host {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Appends triangle (a, b, c), turned to face the way its vertex normals point; a degenerate
-// triangle (a sphere's pole) is dropped.
-void add_triangle(Mesh& m, uint32_t a, uint32_t b, uint32_t c) {
-  const Vertex& va = m.vertices[a];
-  const Vertex& vb = m.vertices[b];
-  const Vertex& vc = m.vertices[c];
-  const glm::dvec3 g = glm::cross(vb.position - va.position, vc.position - va.position);
-  if (glm::dot(g, g) == 0) return;
-  if (glm::dot(g, va.normal + vb.normal + vc.normal) < 0) std::swap(b, c);
-  m.triangles.push_back({a, b, c});
-}
-
-void add_quad(Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
-  add_triangle(m, a, b, c);
-  add_triangle(m, a, c, d);
-}
-
-uint32_t add_vertex(Mesh& m, const glm::dvec3& p, const glm::dvec3& n, const glm::dvec2& uv) {
-  m.vertices.push_back({p, n, uv});
-  return static_cast<uint32_t>(m.vertices.size() - 1);
-}
 
 // Facing +Y, u along +x and v along +z, so an image lies upright seen from above with -z up.
 Mesh plane(const Object& o) {
@@ -156,8 +134,23 @@ Mesh make_mesh(const Object& object) {
       for (Vertex& v : m.vertices) v.uv *= object.uv_repeat;
       return m;
     }
+    case Object::Shape::kNurbs:
+      throw std::invalid_argument("make_mesh: a nurbs object is tessellated by make_meshes");
   }
   return {};
+}
+
+std::vector<Mesh> make_meshes(const Scene& scene, const std::vector<glm::ivec2>& texture_sizes) {
+  std::vector<Mesh> meshes;
+  for (const Object& o : scene.objects) {
+    if (o.shape == Object::Shape::kNurbs) {
+      const auto m = static_cast<size_t>(o.material);
+      meshes.push_back(nurbs::tessellate(o, scene.materials[m], scene.camera, texture_sizes.at(m)));
+    } else {
+      meshes.push_back(make_mesh(o));
+    }
+  }
+  return meshes;
 }
 
 }  // namespace tmu::host

@@ -19,6 +19,7 @@ struct Fragment {
   glm::dvec3 normal{0, 0, 1};  // unit, world space, interpolated
   glm::dvec3 view{0, 0, 1};    // unit, world space, from the surface to the eye
   glm::dvec3 shade{1};         // lighting, each channel 0..1: I_d of eq. 5
+  glm::dvec4 colour{0};        // the vertex colours interpolated (004 claims 17, 18), 0..255
 };
 
 // The fixed-point record: raw values of the declared formats.

@@ -42,6 +42,7 @@ struct DrawnTriangle {
   TriangleSetup setup;
   int material;
   glm::dvec3 face_normal;  // world, unit: the fallback where interpolated normals cancel
+  double lod;              // a fixed lambda (004 claim 12), or NaN: per pixel
 };
 
 struct Frame {
@@ -97,12 +98,13 @@ class Rasterizer {
       const glm::dvec4 p(v.position, 1.0);
       const glm::dvec3 n = normal_matrix * v.normal;
       const double len = glm::length(n);
-      vs[i] = {mvp * p, v.uv * texels, v.position, glm::dvec3(model * p), len > 0 ? n / len : n};
+      vs[i] = {mvp * p, v.uv * texels, v.position, glm::dvec3(model * p), len > 0 ? n / len : n,
+               v.colour};
     }
     for (const auto& t : mesh.triangles) {
       std::array<SetupVertex, 3> tri = {vs[t[0]], vs[t[1]], vs[t[2]]};
       if (mirrored) std::swap(tri[1], tri[2]);
-      draw_triangle(tri, object.material);
+      draw_triangle(tri, object.material, mesh.vertices[t[0]].lod);
     }
   }
 
@@ -133,7 +135,7 @@ class Rasterizer {
                     static_cast<size_t>(x)];
   }
 
-  void draw_triangle(const std::array<SetupVertex, 3>& tri, int material) {
+  void draw_triangle(const std::array<SetupVertex, 3>& tri, int material, double lod) {
     // Back faces (and triangles seen edge-on, and degenerate ones) are culled: front faces
     // are counter-clockwise seen from the eye, as the meshes are from outside.
     if (!(facing(tri[0].clip, tri[1].clip, tri[2].clip) > 0)) return;
@@ -158,7 +160,7 @@ class Rasterizer {
         if (!setup) return;
         const glm::dvec3 g = glm::cross(tri[1].world - tri[0].world, tri[2].world - tri[0].world);
         const double len = glm::length(g);
-        drawn_.push_back({*setup, material, len > 0 ? g / len : glm::dvec3(0, 0, 1)});
+        drawn_.push_back({*setup, material, len > 0 ? g / len : glm::dvec3(0, 0, 1), lod});
         id = static_cast<uint32_t>(drawn_.size() - 1);
       }
       ++triangles_;
@@ -182,7 +184,9 @@ class Rasterizer {
     f.uv = v.uv;
     f.r1 = v.r1;
     f.r2 = v.r2;
-    f.lambda = std::log2(std::max({glm::length(v.r1), glm::length(v.r2), kMinFootprint}));
+    f.lambda = std::isnan(t.lod)
+                   ? std::log2(std::max({glm::length(v.r1), glm::length(v.r2), kMinFootprint}))
+                   : t.lod;
     f.solid = v.solid * scene_.materials[static_cast<size_t>(t.material)].solid_scale;
     const double n = glm::length(v.normal);
     f.normal = n > 0 && std::isfinite(n) ? v.normal / n : t.face_normal;
@@ -190,6 +194,7 @@ class Rasterizer {
     const double e = glm::length(to_eye);
     f.view = e > 0 && std::isfinite(e) ? to_eye / e : -t.face_normal;
     f.shade = shade(scene_.lights, f.normal, v.world);
+    f.colour = v.colour;
     return f;
   }
 

@@ -19,8 +19,9 @@ struct RasterStats {
 };
 
 // The visible fragments of rows [row_begin, row_end) (all rows by default), ordered by
-// (y, x). meshes[i] belongs to scene.objects[i]; texture_sizes[m] is the level-0 size
-// (texels) of material m's texture, which scales u, v and the derivatives to texels.
+// (y, x). meshes[i] belongs to scene.objects[i]; texture_sizes[m] scales material m's u, v and
+// their derivatives to what its first unit takes: the level-0 size of its texture (texels), or
+// for a tau unit's (s, t) 256 times the tau grid's cells (nurbs/nurbs_mesh.hpp).
 std::vector<Fragment> rasterize(const Scene& scene, const std::vector<Mesh>& meshes,
                                 const std::vector<glm::ivec2>& texture_sizes, int row_begin = 0,
                                 int row_end = -1, RasterStats* stats = nullptr);

@@ -50,6 +50,10 @@ std::optional<TriangleSetup> TriangleSetup::make(const std::array<SetupVertex, 3
     s.planes_[kWorld + k] = plane({v[0].world[i], v[1].world[i], v[2].world[i]});
     s.planes_[kNormal + k] = plane({v[0].normal[i], v[1].normal[i], v[2].normal[i]});
   }
+  for (int i = 0; i < 4; ++i) {
+    s.planes_[kColour + static_cast<size_t>(i)] =
+        plane({v[0].colour[i], v[1].colour[i], v[2].colour[i]});
+  }
   return s;
 }
 
@@ -75,6 +79,7 @@ Interpolated TriangleSetup::at(double x, double y) const {
     r.world[i] = value(kWorld + k);
     r.normal[i] = value(kNormal + k);
   }
+  for (int i = 0; i < 4; ++i) r.colour[i] = value(kColour + static_cast<size_t>(i));
   return r;
 }
 

@@ -22,6 +22,7 @@ struct SetupVertex {
   glm::dvec3 solid{0};   // object space
   glm::dvec3 world{0};   // world space
   glm::dvec3 normal{0};  // world space
+  glm::dvec4 colour{0};  // a vertex colour (004 claims 17, 18), 0..255 per channel
 };
 
 struct Interpolated {
@@ -30,6 +31,7 @@ struct Interpolated {
   glm::dvec2 r1{0}, r2{0};  // d(u, v)/dx, d(u, v)/dy
   glm::dvec3 solid{0}, world{0};
   glm::dvec3 normal{0};  // interpolated, not renormalised
+  glm::dvec4 colour{0};
 };
 
 class TriangleSetup {
@@ -58,7 +60,8 @@ class TriangleSetup {
     kSolid,
     kWorld = kSolid + 3,
     kNormal = kWorld + 3,
-    kCount = kNormal + 3
+    kColour = kNormal + 3,
+    kCount = kColour + 4
   };
   std::array<Plane, kCount> planes_;
 };

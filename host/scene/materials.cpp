@@ -159,9 +159,27 @@ Material parse_material(const JsonNode& node, const std::string& name, const std
     m.texture.width = m.texture.height = 1;
     return m;
   }
-  node.allow_keys({"texture", "config", "channel", "filter", "border", "border_colour", "combine",
-                   "constant", "unit", "mipmaps", "footprint", "shading", "shading_map_size",
-                   "bump", "specular", "environment", "reflectance", "procedural"});
+  node.allow_keys({"texture",
+                   "config",
+                   "channel",
+                   "filter",
+                   "border",
+                   "border_colour",
+                   "combine",
+                   "constant",
+                   "unit",
+                   "mipmaps",
+                   "footprint",
+                   "shading",
+                   "shading_map_size",
+                   "bump",
+                   "specular",
+                   "environment",
+                   "reflectance",
+                   "procedural",
+                   "tau",
+                   "order",
+                   "lod"});
   m.texture = parse_texture(node.at("texture"), folder);
   const bool ccc_file = m.texture.kind == TextureSource::Kind::kCcc;
 
@@ -226,6 +244,7 @@ Material parse_material(const JsonNode& node, const std::string& name, const std
   }
 
   parse_effects(node, folder, m);
+  parse_tau(node, m);
 
   // Sides: what the unit that samples the texture can hold.
   const JsonNode texture = node.at("texture");

@@ -51,8 +51,11 @@ Object parse_object(const JsonNode& node, const std::vector<Material>& materials
                     const std::string& folder) {
   node.expect_object();
   Object o;
-  const std::string type = node.at("type").one_of({"plane", "box", "sphere", "torus", "mesh"});
-  if (type == "plane") {
+  const std::string type =
+      node.at("type").one_of({"plane", "box", "sphere", "torus", "mesh", "nurbs"});
+  if (type == "nurbs") {
+    parse_nurbs_object(node, o);
+  } else if (type == "plane") {
     node.allow_keys({"type", "material", "transform", "uv_repeat", "size"});
     o.shape = Object::Shape::kPlane;
     if (auto size = node.find("size")) {
@@ -86,6 +89,13 @@ Object parse_object(const JsonNode& node, const std::vector<Material>& materials
     }
   }
   o.material = material_index(node.at("material"), materials);
+  const Material& m = materials[static_cast<size_t>(o.material)];
+  if (o.shape != Object::Shape::kNurbs && m.tau) {
+    node.at("material")
+        .fail(fmt::format(
+            "material '{}' has a tau mapping (tau, order or lod), which needs a nurbs object",
+            m.name));
+  }
   if (auto t = node.find("transform")) o.transform = parse_transform(*t);
   return o;
 }

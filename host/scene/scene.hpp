@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "footprint/footprint.hpp"
+#include "nurbs/patch.hpp"
+#include "nurbs/tau_map.hpp"
 #include "perlin/colour_table.hpp"
 #include "perlin/materials.hpp"
 #include "texram/sampler_config.hpp"
@@ -110,6 +112,19 @@ struct Material {
   // solid_scale.
   std::optional<Procedural> procedural;
   double solid_scale = 1;
+  // The tau mapping of 004 (parameter to texture coordinates) and what a triangle
+  // interpolates (claims 15-18); without a tau, the mesh's uv are the texture coordinates.
+  std::optional<nurbs::TauMap> tau;
+  enum class Order {
+    kPc,        // claim 15: (s, t) per pixel, the tau unit maps them (hardware, per pixel)
+    kTc,        // claim 16: tau at the vertices, (u, v) interpolated
+    kTexture,   // claim 17: the texture colour at the vertices, interpolated
+    kComposed,  // claim 18: texture and object colour composed at the vertices, interpolated
+  };
+  Order order = Order::kTc;
+  // The mip level: per pixel from the derivatives, or per patch from the TC criteria (claim 12).
+  enum class Lod { kPixel, kTc };
+  Lod lod = Lod::kPixel;
   // The deflection chain (normal encoder, coordinate generator, ...) is built for this material.
   bool uses_normal() const { return shading == Shading::kMaps || environment.has_value(); }
 };
@@ -119,14 +134,29 @@ struct Transform {
   glm::dmat4 matrix() const;  // scale, then rotate X, Y, Z, then translate
 };
 
+// How finely a NURBS object is tessellated (004 claims 7-11): step lengths in MC (modelling
+// units), DC (pixels) and TC (texels of level 0); the steps from MC and DC (the larger count
+// when both are given) and from TC are combined by `combine` (claim 11's averaging g) and
+// capped at max_steps per patch and direction. Without any threshold, dc = 4.
+struct Tessellation {
+  std::optional<double> mc, dc, tc;
+  enum class Combine { kMean, kGeometric, kMax };
+  Combine combine = Combine::kMean;
+  int max_steps = 64;
+};
+
 struct Object {
-  enum class Shape { kPlane, kBox, kSphere, kTorus, kMesh };
+  enum class Shape { kPlane, kBox, kSphere, kTorus, kMesh, kNurbs };
   Shape shape = Shape::kPlane;
   glm::dvec3 size{1};  // plane: x, z (size.y unused); box: x, y, z
   glm::dvec2 uv_repeat{1, 1};
   double radius = 1, tube = 0.25;
   glm::ivec2 segments{32, 16};
   std::string file;  // mesh: resolved OBJ path
+  // nurbs: the patches in modelling coordinates; their knot domains are the object's parameter
+  // coordinates (PC), normalised to [0, 1] over the rectangle that holds them all.
+  std::vector<nurbs::Patch> patches;
+  Tessellation tessellation;
   Transform transform;
   int material = 0;  // index into Scene::materials
 };

@@ -23,6 +23,10 @@ TextureSource parse_texture(const JsonNode& node, const std::string& folder);
 // The material keys of the deflection chain (shading, shading_map_size, bump, specular,
 // environment, reflectance) into `material`, whose texture is already parsed.
 void parse_effects(const JsonNode& node, const std::string& folder, Material& material);
+// A "nurbs" object's keys (surface or patches, tessellation) into `object`.
+void parse_nurbs_object(const JsonNode& node, Object& object);
+// The material keys "tau", "order" and "lod" (004) into `material`.
+void parse_tau(const JsonNode& node, Material& material);
 // "procedural": {...} into `material` (its scale into solid_scale).
 void parse_procedural(const JsonNode& node, Material& material);
 

@@ -17,6 +17,7 @@
 #include "footprint/footprint_ideal.hpp"
 #include "render/effect_chain.hpp"
 #include "render/procedural_chain.hpp"
+#include "render/tau_stage.hpp"
 #include "render/texture_source.hpp"
 #include "texram/mipgen_stream.hpp"
 #include "texram/trilinear.hpp"
@@ -38,9 +39,11 @@ texram::Level8 level0_plane(const texram::TexramTexture& t, int plane) {
 
 UnitRun texture_unit(const host::Material& mat, const MaterialTexture& tex,
                      const std::vector<host::FragmentRecord>& records,
-                     const std::vector<size_t>& frags, const std::vector<uint32_t>& shades) {
+                     const std::vector<size_t>& frags, const std::vector<uint32_t>& shades,
+                     const std::string& role) {
   UnitRun run;
   run.material = mat.name;
+  run.role = role;
   if (mat.footprint) {
     run.kind = "footprint";
     const auto block = std::make_shared<tb::FootprintBlock>(
@@ -165,6 +168,16 @@ std::vector<glm::ivec2> Pipeline::texture_sizes() const {
   return sizes;
 }
 
+std::vector<glm::ivec2> Pipeline::uv_scales() const {
+  std::vector<glm::ivec2> scales;
+  for (size_t m = 0; m < textures_.size(); ++m) {
+    const host::Material& mat = scene_.materials[m];
+    scales.push_back(mat.order == host::Material::Order::kPc ? pc_uv_scale(mat)
+                                                             : textures_[m].size);
+  }
+  return scales;
+}
+
 std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& records,
                                       const std::vector<host::Fragment>* fragments,
                                       std::vector<glm::dvec4>* ideal_rgba,
@@ -183,7 +196,45 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
     const host::Material& mat = scene_.materials[m];
     const MaterialTexture& tex = textures_[m];
     const bool lowcost = mat.unit == host::Material::Unit::kLowcost;
+    const bool pc = mat.order == host::Material::Order::kPc;
 
+    if (samples_at_vertices(mat)) {
+      if (!fragments || fragments->size() != records.size()) {
+        throw InputError(scene_.path, "materials." + mat.name + ".order",
+                         "the orders texture and composed interpolate vertex colours, which "
+                         "only the front end gives (not a replayed trace)");
+      }
+      const bool compose = mat.order == host::Material::Order::kTexture;
+      for (size_t i : frags) {
+        const host::Fragment& f = (*fragments)[i];
+        if (level_ == Level::kIdeal) {
+          glm::dvec4 c = f.colour;
+          if (compose && mat.sampler.combine != texram::Combine::kOne) {
+            const uint32_t k = mat.sampler.combine == texram::Combine::kConstant
+                                   ? mat.sampler.constant_rgba
+                                   : records[i].shade;
+            for (int ch = 0; ch < 4; ++ch) c[ch] *= texram::channel(k, ch) / 255.0;
+          }
+          (*ideal_rgba)[i] = c;
+          out[i] = rgba_of(c);
+        } else {
+          out[i] = compose ? texram::combine(rgba_of(f.colour), mat.sampler, records[i].shade)
+                           : rgba_of(f.colour);
+        }
+      }
+      if (level_ != Level::kIdeal) {
+        note_host_work(compose ? HostWork{"order texture: the interpolated vertex texture colour "
+                                          "composed with the pixel's shade (texram::combine)",
+                                          "004 claim 17 composes after the rasterizer's "
+                                          "interpolation, outside the texture unit"}
+                               : HostWork{"order composed: the vertex colours interpolated",
+                                          "004 claim 18 leaves nothing per pixel but the "
+                                          "rasterizer's interpolation"});
+      }
+      done += frags.size();
+      if (progress) progress(done, records.size());
+      continue;
+    }
     if (mat.procedural) {
       const ChainInput in{scene_, mat, tex, level_, records, frags};
       if (level_ == Level::kIdeal) {
@@ -223,7 +274,7 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
             c *= glm::dvec4(f.shade, 1.0);
           }
         } else {
-          c = ideal_texture(mat, tex, mat.sampler, f, shade);
+          c = ideal_texture(mat, tex, mat.sampler, pc ? ideal_tau(mat, tex.size, f) : f, shade);
         }
         (*ideal_rgba)[i] = c;
         out[i] = rgba_of(c);
@@ -254,7 +305,11 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
     } else {
       std::vector<uint32_t> shades;
       for (size_t i : frags) shades.push_back(records[i].shade);
-      run = texture_unit(mat, tex, records, frags, shades);
+      run = pc ? texture_unit(
+                     mat, tex,
+                     run_tau(mat, tex.size, records, frags, level_, units_, fragment_of_output_),
+                     frags, shades)
+               : texture_unit(mat, tex, records, frags, shades);
     }
     tb::RunOptions options;
     const uint64_t base = done;

@@ -9,6 +9,7 @@
 //                      it holds its own trilinear unit (host or mipgen pyramid as above)
 //   shading maps, "bump", "environment": the deflection chain (render/effect_chain.hpp)
 //   "procedural"     : the material unit (render/procedural_chain.hpp), no texture
+//   order "pc"       : the tau unit (render/tau_stage.hpp) in front of trilinear or footprint
 #pragma once
 
 #include <functional>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "ccc/ccc_texture.hpp"
+#include "geometry/mesh.hpp"
 #include "raster/fragment.hpp"
 #include "render/effect_maps.hpp"
 #include "render/units.hpp"
@@ -39,9 +41,15 @@ struct MaterialTexture {
 
 // The unit that samples a material's texture (trilinear, or footprint in front of it; not the
 // low-cost unit) for the fragments `frags` of `records`, with I_d = shades[k] for frags[k].
+// `role` names what it samples for (UnitRun::role; "" for the material's fragments).
 UnitRun texture_unit(const host::Material& material, const MaterialTexture& texture,
                      const std::vector<host::FragmentRecord>& records,
-                     const std::vector<size_t>& frags, const std::vector<uint32_t>& shades);
+                     const std::vector<size_t>& frags, const std::vector<uint32_t>& shades,
+                     const std::string& role = "");
+
+// Orders texture and composed (004 claims 17, 18): the material samples its texture at the
+// vertices (Pipeline::colour_vertices), and its fragments carry the interpolated colours.
+bool samples_at_vertices(const host::Material& material);
 
 // The ideal model of texture_unit for one fragment, with `sampler` (the material's, or a copy).
 glm::dvec4 ideal_texture(const host::Material& material, const MaterialTexture& texture,
@@ -66,10 +74,19 @@ class Pipeline {
   Level level() const { return level_; }
   const std::vector<MaterialTexture>& textures() const { return textures_; }
   std::vector<glm::ivec2> texture_sizes() const;
+  // What the rasterizer scales each material's uv by: its texture size, or for an order-pc
+  // material 256 times its tau grid's cells (render/tau_stage.hpp).
+  std::vector<glm::ivec2> uv_scales() const;
+
+  // Orders texture and composed: each vertex colour of the objects whose material samples at
+  // the vertices (render/vertex_colours.cpp), through the material's texture unit (kept in
+  // units(), role "vertices") or, at ideal, the ideal sampler. Before rasterizing.
+  void colour_vertices(std::vector<host::Mesh>& meshes);
 
   // Textures the fragments (fixed-point records; ideal also takes the double fragments, in the
-  // same order). Returns RGBA8888 per fragment; ideal_rgba receives the ideal model's
-  // unrounded colours (ideal only).
+  // same order; orders texture and composed take their interpolated colours at every level).
+  // Returns RGBA8888 per fragment; ideal_rgba receives the ideal model's unrounded colours (ideal
+  // only).
   std::vector<uint32_t> shade(const std::vector<host::FragmentRecord>& records,
                               const std::vector<host::Fragment>* fragments,
                               std::vector<glm::dvec4>* ideal_rgba,

@@ -51,6 +51,20 @@ ImageRgb8 compose(const host::Scene& scene, const Band& band,
 }
 
 // A "hot" colour ramp for error maps: black, red, yellow, white as t goes 0 -> 1.
+bool samples_at_vertices_anywhere(const host::Scene& scene) {
+  return std::any_of(scene.materials.begin(), scene.materials.end(),
+                     [](const host::Material& m) { return samples_at_vertices(m); });
+}
+
+// The front end: every object's mesh (NURBS objects tessellated), the vertex colours of the
+// orders texture and composed through `pipe`, rasterized for the band.
+std::vector<host::Fragment> front_end(const host::Scene& scene, Pipeline& pipe, const Band& band,
+                                      host::RasterStats* stats) {
+  std::vector<host::Mesh> meshes = host::make_meshes(scene, pipe.texture_sizes());
+  pipe.colour_vertices(meshes);
+  return host::rasterize(scene, meshes, pipe.uv_scales(), band.row_begin, band.row_end, stats);
+}
+
 Rgb8 hot(double t) {
   auto c = [](double v) {
     return static_cast<uint8_t>(std::lround(255 * std::clamp(v, 0.0, 1.0)));
@@ -133,10 +147,7 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
     }
     rep.raster.fragments = rep.raster.visible = records.size();
   } else {
-    std::vector<host::Mesh> meshes;
-    for (const host::Object& obj : scene.objects) meshes.push_back(host::make_mesh(obj));
-    fragments = host::rasterize(scene, meshes, pipe.texture_sizes(), band.row_begin, band.row_end,
-                                &rep.raster);
+    fragments = front_end(scene, pipe, band, &rep.raster);
     for (const host::Fragment& f : fragments) records.push_back(host::quantize(f));
   }
   rep.front_end_s = since(t);
@@ -196,6 +207,8 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
   // Bit for bit against another engine, fragment by fragment.
   if (o.check) {
     Pipeline ref(scene, *o.check);
+    // Its own vertex units, for the unit check (the pixels compare on this run's fragments).
+    if (samples_at_vertices_anywhere(scene)) front_end(scene, ref, band, nullptr);
     const std::vector<uint32_t> expected = ref.shade(records, &fragments, nullptr);
     CheckReport c;
     c.against = std::string(name(*o.check));
@@ -256,7 +269,10 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
   if (o.compare_ideal && o.level != Level::kIdeal) {
     Pipeline ip(scene, Level::kIdeal);
     std::vector<glm::dvec4> exact;
-    ip.shade(records, &fragments, &exact);
+    // Orders texture and composed: the ideal's own vertex colours, interpolated.
+    const std::vector<host::Fragment> ideal_fragments =
+        samples_at_vertices_anywhere(scene) ? front_end(scene, ip, band, nullptr) : fragments;
+    ip.shade(records, &ideal_fragments, &exact);
     CompareReport c;
     ImageRgb8 heat(width, band.row_end - band.row_begin);
     double se = 0, sum = 0;

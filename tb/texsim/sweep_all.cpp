@@ -215,9 +215,9 @@ std::string document(const SweepAllArgs& args, const fs::path& data, const std::
     doc += section_tail(s.stem, data);
   }
   doc +=
-         "## CCC decoder and low-cost unit (000 §3-4)\n\nNo width settings: the decoder is "
-         "exact (a CLUT look-up) and the low-cost unit's weights are the 8 bits §4 gives them. "
-         "Their figures: [ccc.md](ccc.md).\n";
+      "## CCC decoder and low-cost unit (000 §3-4)\n\nNo width settings: the decoder is "
+      "exact (a CLUT look-up) and the low-cost unit's weights are the 8 bits §4 gives them. "
+      "Their figures: [ccc.md](ccc.md).\n";
   return doc;
 }
 
