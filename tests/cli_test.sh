@@ -36,7 +36,7 @@ run() {
 }
 
 for cmd in "" "cosim" "ccc" "ccc encode" "ccc decode" "ccc roundtrip" "formats" "pattern" "sample" "mipgen" \
-  "sweep" "render" "merge" "levels" "terrain"; do
+  "sweep" "render" "merge" "levels" "terrain" "nurbs"; do
   # shellcheck disable=SC2086
   expect "help: texsim $cmd" 0 "Usage" -- "$texsim" $cmd --help
 done
@@ -155,6 +155,17 @@ expect "a fly-over has no ideal render" 2 "golden, hls or rtl" -- \
   "$texsim" render "$root/scenes/flyover.json" --engine ideal --out rx
 expect "--frames is for fly-overs" 2 "fly-over" -- \
   "$texsim" render "$root/scenes/plain.json" --frames 1 --out rx
+# NURBS (004): the tessellation report and its wireframe; a bad knot vector names the patch.
+expect "texsim nurbs reports each patch's steps" 0 "patch   8: MC/DC .* steps" -- \
+  "$texsim" nurbs "$root/scenes/nurbs_freeform.json" --dc 8 --wireframe wire.png
+[[ -s wire.png ]] && pass "the wireframe is written" || fail "no wire.png"
+expect "texsim nurbs: a threshold must be positive" 2 "--dc" -- \
+  "$texsim" nurbs "$root/scenes/nurbs.json" --dc 0
+sed -e 's/"knots_s": \[0, 0, 0, 0, 1, 1, 1, 1\]/"knots_s": [0, 0, 1, 0, 1, 1, 1, 1]/' \
+  -e "s|images/default.png|$root/scenes/images/default.png|" "$root/scenes/nurbs_freeform.json" >knots.json
+expect "a knot vector out of order names the patch" 2 \
+  'knots.json: objects\[0\].patches\[0\]: knots_s: not non-decreasing' -- \
+  "$texsim" render knots.json --out rx
 [[ ! -e rx ]] && pass "no output after failed renders" || fail "rx written by a failed render"
 for band in 0 1 2; do
   run "render band $band/3" -- "$texsim" render "$root/scenes/plain.json" --tile $band/3 --out bands --no-progress
