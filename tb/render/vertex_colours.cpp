@@ -40,7 +40,9 @@ void Pipeline::colour_vertices(std::vector<host::Mesh>& meshes) {
       f.material = obj.material;
       f.uv = v.uv * glm::dvec2(tex.size);
       f.lambda = v.lod;
-      f.shade = host::shade(scene_.lights, glm::normalize(normal_matrix * v.normal),
+      const glm::dvec3 n = normal_matrix * v.normal;
+      const double len = glm::length(n);  // 0 only where the surface has no normal at all
+      f.shade = host::shade(scene_.lights, len > 0 ? n / len : n,
                             glm::dvec3(model * glm::dvec4(v.position, 1.0)));
       index.push_back(records.size());
       records.push_back(host::quantize(f));
