@@ -27,12 +27,6 @@
 namespace tmu::host {
 namespace {
 
-// lambda = log2 max(|r1|, |r2|) needs a positive argument: a surface whose texture does not
-// change across the pixel (uv_repeat tiny, or a texture of one texel) has a footprint of 0.
-// 2^-40 texels gives lambda = -40, below anything the Lod format (SQ6.8, >= -32) holds, so the
-// clamp never changes a quantized lambda.
-constexpr double kMinFootprint = 0x1p-40;
-
 struct Winner {
   double depth = std::numeric_limits<double>::infinity();
   uint32_t triangle = std::numeric_limits<uint32_t>::max();  // into the setups; max: none

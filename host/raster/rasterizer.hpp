@@ -12,6 +12,12 @@
 
 namespace tmu::host {
 
+// lambda = log2 max(|r1|, |r2|) needs a positive argument: a surface whose texture does not
+// change across the pixel (uv_repeat tiny, or a texture of one texel) has a footprint of 0.
+// 2^-40 texels gives lambda = -40, below anything the Lod format (SQ6.8, >= -32) holds, so the
+// clamp never changes a quantized lambda.
+inline constexpr double kMinFootprint = 0x1p-40;
+
 struct RasterStats {
   uint64_t triangles = 0;  // after culling and clipping
   uint64_t fragments = 0;  // rasterized, before the depth test (overdraw included)

@@ -6,6 +6,7 @@
 
 #include "formats/formats.hpp"
 #include "nurbs/tau_map.hpp"
+#include "raster/rasterizer.hpp"
 
 namespace tmu::render {
 namespace {
@@ -78,8 +79,7 @@ host::Fragment ideal_tau(const host::Material& material, glm::ivec2 texture_size
   };
   g.r1 = map(f.r1);
   g.r2 = map(f.r2);
-  // The rasterizer's floor for a footprint of 0 (host/raster/rasterizer.cpp).
-  g.lambda = std::log2(std::max({glm::length(g.r1), glm::length(g.r2), 0x1p-40}));
+  g.lambda = std::log2(std::max({glm::length(g.r1), glm::length(g.r2), host::kMinFootprint}));
   return g;
 }
 
