@@ -16,6 +16,13 @@ binds=$(cat "$work"/all/rtl/*_binds.sv | grep -c '^bind ')
 # 39 when the binds were hand-written, the six readied channels of each clip-map top, and the
 # tau unit's three (in, node, out).
 [[ $binds -eq 54 ]] && pass "54 channel checks bound" || fail "$binds channel checks bound, not 54"
+# Verilator reads a comment `// verilator ...` as a directive and stops on one it does not know:
+# no generated comment line may start with that word (tmu_tau's binds once did).
+if grep -qi '^// verilator' "$work"/all/rtl/*_binds.sv; then
+  fail "a binds comment line starts with 'Verilator': $(grep -li '^// verilator' "$work"/all/rtl/*_binds.sv)"
+else
+  pass "no binds comment line starts with 'Verilator'"
+fi
 
 # bad NAME TEXT PATTERN: a description foo.json of TEXT fails with PATTERN in the message.
 bad() {
