@@ -16,7 +16,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 # Per block: the column naming a setting, the default setting, the error column (lower is
 # better), the columns whose sum is the area, and the time column with how to turn it into a
-# time (a rate is inverted). A block without an area column gets one plot.
+# time (a rate is inverted). A block without an area column gets one plot. xlog: both x axes
+# logarithmic (counts spanning decades, such as triangles).
 SPECS = {
     "trilinear": dict(
         label="S,W,L", default="8,8,8", error="mean err", error_name="mean error (8-bit levels)",
@@ -46,6 +47,11 @@ SPECS = {
         error_name="mean error vs every level resident (8-bit levels)", cells=["resident texels"],
         cells_name="texels resident", time="loads/frame", time_name="texels loaded per frame",
         invert=False),
+    "nurbs": dict(
+        label="threshold", default="DC 4", error="mean err",
+        error_name="mean error vs quarter-pixel order-pc ideal (8-bit levels)",
+        cells=["triangles"], cells_name="triangles", time="front end s",
+        time_name="front-end seconds (tessellation + rasterization)", invert=False, xlog=True),
     "perlin": dict(
         label="F,S,B,X", default="8,8,8,4", error="P mean", error_name="noise mean error",
         cells=["noise cells"], cells_name="noise unit cells", time="golden ns/sample",
@@ -90,6 +96,8 @@ def scatter(ax, pts, x_of, x_name, spec):
         ax.annotate(label + (" (default)" if is_default else ""), (x, error), fontsize=7,
                     xytext=(4, 3), textcoords="offset points")
     ax.set_xlabel(x_name)
+    if spec.get("xlog"):
+        ax.set_xscale("log")
     ax.set_ylabel(spec["error_name"])
     ax.set_yscale("log")
     ax.grid(True, which="both", alpha=0.3)
