@@ -42,12 +42,13 @@ TauMap wave(int cells, tau::Interp interp) {
   return m;
 }
 
-// Nodes on whole texels at 8 cells (u = 24 i + 8 j + 32, v = -4 i + 28 j + 16): the grid holds
-// the map exactly.
+// At 8 cells its nodes are whole texels (u = 32 i + 16 j + 32, v = -16 i + 48 j + 16), so the
+// grid holds the map exactly, and every slope is a multiple of 16 texels a cell, so that a
+// weight fraction x / 2^12 moves (u, v) by whole 1/256 texels: nothing to round either.
 TauMap affine(tau::Interp interp) {
   TauMap m;
   m.kind = TauMap::Kind::kAffine;
-  m.matrix = glm::dmat2(0.75, -0.125, 0.25, 0.875);  // columns d(u, v)/ds, d(u, v)/dt
+  m.matrix = glm::dmat2(1.0, -0.5, 0.5, 1.5);  // columns d(u, v)/ds, d(u, v)/dt
   m.offset = {0.125, 0.0625};
   m.cells = {8, 8};
   m.interp = interp;
@@ -171,10 +172,13 @@ SweepTable tau_grid_table(size_t samples, size_t rtl_items) {
     }
     const RtlFigures rtl = run_rtl(grid, requests);
     const double n = static_cast<double>(std::max<size_t>(samples, 1));
-    table.add({c.name, fmt::format("{}", grid.u.size()), fmt::format("{:.4f}", uv_max),
-               fmt::format("{:.4f}", uv_sum / n), fmt::format("{:.3f}", l_max),
-               fmt::format("{:.4f}", l_sum / n), rtl.match ? "yes" : "NO",
-               fmt::format("{:.2f}", rtl.cycles_per_sample)});
+    // An exact row says 0, not a rounded 0.0000.
+    const auto texels = [](double x) {
+      return x == 0 ? std::string("0") : fmt::format("{:.4f}", x);
+    };
+    table.add({c.name, fmt::format("{}", grid.u.size()), texels(uv_max), texels(uv_sum / n),
+               fmt::format("{:.3f}", l_max), fmt::format("{:.4f}", l_sum / n),
+               rtl.match ? "yes" : "NO", fmt::format("{:.2f}", rtl.cycles_per_sample)});
     fmt::print("  {}\n", table.last_row_text());
   }
   return table;
