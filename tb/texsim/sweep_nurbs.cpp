@@ -10,6 +10,7 @@
 
 #include "common/error.hpp"
 #include "scene/scene.hpp"
+#include "tau/tau_definition.hpp"
 #include "texsim/sweep_nurbs_frame.hpp"
 #include "texsim/sweep_nurbs_tau.hpp"
 #include "texsim/sweep_support.hpp"
@@ -200,16 +201,23 @@ SweepTable order_table(const NurbsSweepArgs& args) {
                     Column("coverage diff px", Mark::kModel), Column("PSNR dB", Mark::kModel),
                     Column("max err", Mark::kModel), Column("mean err", Mark::kModel),
                     Column("unit cycles", Mark::kSim), "rtl = golden"});
+  // The last row: order pc with twice the tau grid's cells, where pc's error comes from.
   const struct {
     const char* name;
     const char* claim;
     Material::Order order;
-  } orders[] = {{"pc", "15", Material::Order::kPc},
-                {"tc", "16", Material::Order::kTc},
-                {"texture", "17", Material::Order::kTexture},
-                {"composed", "18", Material::Order::kComposed}};
+    int grid_scale;
+  } orders[] = {{"pc", "15", Material::Order::kPc, 1},
+                {"tc", "16", Material::Order::kTc, 1},
+                {"texture", "17", Material::Order::kTexture, 1},
+                {"composed", "18", Material::Order::kComposed, 1},
+                {"pc, grid cells x 2", "15", Material::Order::kPc, 2}};
   for (const auto& o : orders) {
-    const host::Scene s = with_order(scene, o.order);
+    host::Scene s = with_order(scene, o.order);
+    for (Material& m : s.materials) {
+      if (m.tau && m.tau->kind != host::nurbs::TauMap::Kind::kGrid)
+        m.tau->cells = glm::min(m.tau->cells * o.grid_scale, glm::ivec2(tau::kMaxCells));
+    }
     const NurbsFrame golden = render_frame(s, Level::kGolden);
     const NurbsFrame rtl = render_frame(s, Level::kRtl, Level::kGolden);
     const NurbsFrameError e = frame_error(golden, ref);
