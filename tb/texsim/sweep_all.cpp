@@ -99,10 +99,12 @@ const Section kSections[] = {
      "scene at the ideal engine tessellated through quarter-pixel steps (DC 0.25: the surface "
      "within a small fraction of a pixel, not ray cast) and in order pc, tau applied per pixel "
      "in double precision to the exactly interpolated (s, t); PSNR and max / mean error (RGB, "
-     "8-bit levels) over the pixels both frames cover, the pixels only one covers counted. Cost: "
+     "8-bit levels) over the pixels both frames cover, the pixels only one covers counted (the "
+     "max error is a few isolated pixels near edges until the steps are about a pixel). Cost: "
      "triangles, the front end's time (tessellation and rasterization) and the units' cycles "
-     "(golden's, the page model's prediction). Below: the tau unit's grid against the "
-     "functional map, and the four composition orders.",
+     "(golden's, the page model's prediction: the texture's accesses, nearly the same for every "
+     "row). "
+     "Below: the tau unit's grid against the functional map, and the four composition orders.",
      "nurbs_sweep.md"},
 };
 
@@ -212,14 +214,19 @@ std::string section_tail(const std::string& stem, const fs::path& data) {
            "derivatives (a quarter texel to 64 texels a pixel); |delta (u, v)| in texels, lambda "
            "in levels. The affine rows sample where the unit's 12-bit weight fractions are exact: "
            "an affine map comes out exact in either interpolation (the lambda error there is the "
-           "log2 table's); the last one samples anywhere (the weights' truncation). rtl = golden "
-           "on the first 4000 samples of each row, cycles per sample at rtl once the grid is "
-           "loaded.\n\n" +
+           "log2 table's); the last one samples anywhere (the weights' truncation). At 1 cell the "
+           "spline's stencil holds two extrapolated nodes, a line: it is the linear grid; at 2 "
+           "cells neither grid resolves the wave's 1.5 periods. rtl = golden on the first 4000 "
+           "samples of each row; cycles per sample at rtl once the grid is loaded.\n\n" +
            read_file(data / "nurbs_tau.md") +
            "\n### NURBS texturing: the composition orders (claims 15-18)\n\n"
-           "scenes/nurbs_orders.json's sphere alone (wave tau, 8 x 8 spline grid, its own "
-           "tessellation, DC 12) in each order against the same kind of reference; unit cycles "
-           "at rtl, rendered with the unit-by-unit check against golden.\n\n" +
+           "scenes/nurbs_orders.json's first sphere alone, in the middle of the frame (wave tau, "
+           "8 x 8 spline grid, its own tessellation, DC 12), in each order against the same kind "
+           "of reference, and in order pc with twice the grid's cells (16 x 16): what order pc "
+           "loses to tc here is the 8 x 8 tau grid's error. Errors of golden's frame; unit cycles "
+           "at rtl, rendered with "
+           "the unit-by-unit check against golden (rtl = golden: every pixel and every unit's "
+           "outputs, requests and counters).\n\n" +
            read_file(data / "nurbs_orders.md") + "\n";
   }
   return "";
