@@ -16,7 +16,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 # Per block: the column naming a setting, the default setting, the error column (lower is
 # better), the columns whose sum is the area, and the time column with how to turn it into a
-# time (a rate is inverted). A block without an area column gets one plot.
+# time (a rate is inverted). A block without an area column gets one plot. xlog: both x axes
+# logarithmic (counts spanning decades, such as triangles); title: the figure's, when the
+# default's words (area, time) would mislead.
 SPECS = {
     "trilinear": dict(
         label="S,W,L", default="8,8,8", error="mean err", error_name="mean error (8-bit levels)",
@@ -46,6 +48,12 @@ SPECS = {
         error_name="mean error vs every level resident (8-bit levels)", cells=["resident texels"],
         cells_name="texels resident", time="loads/frame", time_name="texels loaded per frame",
         invert=False),
+    "nurbs": dict(
+        label="threshold", default="DC 4", error="mean err",
+        error_name="mean error vs the reference (8-bit levels)",
+        cells=["triangles"], cells_name="triangles", time="front end s",
+        time_name="front-end seconds (tessellation + rasterization)", invert=False, xlog=True,
+        title="nurbs: error against triangles and front-end time (order tc)"),
     "perlin": dict(
         label="F,S,B,X", default="8,8,8,4", error="P mean", error_name="noise mean error",
         cells=["noise cells"], cells_name="noise unit cells", time="golden ns/sample",
@@ -90,6 +98,8 @@ def scatter(ax, pts, x_of, x_name, spec):
         ax.annotate(label + (" (default)" if is_default else ""), (x, error), fontsize=7,
                     xytext=(4, 3), textcoords="offset points")
     ax.set_xlabel(x_name)
+    if spec.get("xlog"):
+        ax.set_xscale("log")
     ax.set_ylabel(spec["error_name"])
     ax.set_yscale("log")
     ax.grid(True, which="both", alpha=0.3)
@@ -105,7 +115,8 @@ def plot(block, spec, directory):
     if spec["cells"]:
         scatter(axes[0][0], pts, lambda c, t: c, spec["cells_name"], spec)
     scatter(axes[0][-1], pts, lambda c, t: t, spec["time_name"], spec)
-    fig.suptitle(f"{block}: error against " + ("area and time" if spec["cells"] else "time"))
+    fig.suptitle(spec.get("title") or
+                 f"{block}: error against " + ("area and time" if spec["cells"] else "time"))
     fig.tight_layout()
     path = os.path.join(directory, block + ".png")
     fig.savefig(path, dpi=100)

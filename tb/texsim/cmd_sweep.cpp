@@ -28,6 +28,7 @@
 #include "texsim/sweep_footprint.hpp"
 #include "texsim/sweep_footprint_setup.hpp"
 #include "texsim/sweep_mipgen.hpp"
+#include "texsim/sweep_nurbs.hpp"
 #include "texsim/sweep_perlin.hpp"
 #include "texsim/sweep_support.hpp"
 
@@ -217,6 +218,13 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       "per frame, wayward samples, the frames' error against the whole pyramid's; loads against "
       "speed; rtl = golden,\n"
       "cycles and cells at the default tile (docs/clipmap.md).\n"
+      "nurbs: NURBS texturing (004) per tessellation threshold (MC, DC, TC, combined; order tc): "
+      "triangles,\n"
+      "front-end time, cycles, PSNR against an ideal quarter-pixel order-pc reference; the tau "
+      "unit per grid\n"
+      "size and interpolation against the functional map, rtl = golden; the orders pc, tc, "
+      "texture, composed\n"
+      "on a sphere (docs/nurbs_sweep.md).\n"
       "all: every sweep above, the model-level table (texsim levels) and the default scene at "
       "every engine, with\n"
       "a plot per block (scripts/plot_accuracy.py): writes DIR/accuracy.md and DIR/accuracy/ "
@@ -230,10 +238,10 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
   auto fp = std::make_shared<FootprintSweepArgs>();
   cmd->add_option("block", args->block,
                   "trilinear | footprint | footprint-setup | deflection | perlin | mipgen | "
-                  "clipmap | all")
+                  "clipmap | nurbs | all")
       ->required()
       ->check(CLI::IsMember({"trilinear", "footprint", "footprint-setup", "deflection", "perlin",
-                             "mipgen", "clipmap", "all"}));
+                             "mipgen", "clipmap", "nurbs", "all"}));
   cmd->add_option("--settings", args->settings,
                   "trilinear: width settings S,W,L separated by ';' (footprint-setup: D,T,F; "
                   "default " +
@@ -241,11 +249,14 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
                       DeflectionSweepArgs{}.settings + "; perlin: F,S,B,X, default " +
                       PerlinSweepArgs{}.settings + "; mipgen: carries 0..20, default " +
                       MipgenSweepArgs{}.settings + "; clipmap: log2 tile sides, default " +
-                      ClipmapSweepArgs{}.settings + ")")
+                      ClipmapSweepArgs{}.settings +
+                      "; nurbs: tessellation rows of mc=, dc=, tc=, g=, max= terms joined by '+', "
+                      "default " +
+                      NurbsSweepArgs{}.settings + ")")
       ->capture_default_str();
   cmd->add_option("--requests", args->requests,
-                  "trilinear, footprint-setup: random requests for the error statistics "
-                  "(footprint-setup default 200000)")
+                  "trilinear, footprint-setup, nurbs: random requests for the error statistics "
+                  "(footprint-setup default 200000; nurbs: (s, t) per tau row, default 200000)")
       ->capture_default_str();
   cmd->add_option("--out", args->out_dir,
                   "Write the rendered pictures (and footprint: error maps, side by side) here");
@@ -257,7 +268,8 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
          "--scene", fp->scene,
          "footprint: the scene (default scenes/grazing.json); deflection: the fragments of its "
          "materials with a deflection chain (default a synthetic bump-mapped sphere); perlin: "
-         "its procedural materials (default scenes/procedural.json); all: the scene rendered at "
+         "its procedural materials (default scenes/procedural.json); nurbs: the scene of the "
+         "threshold table (default scenes/nurbs_freeform.json); all: the scene rendered at "
          "every "
          "engine (default scenes/default.json)")
       ->check(CLI::ExistingFile);
@@ -265,7 +277,9 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
                   "footprint: the reference's sub-pixels per side (default 8, 4 with --quick; 1: "
                   "per-pixel supersampled footprint)")
       ->check(CLI::Range(1, 16));
-  cmd->add_flag("--quick", fp->quick, "footprint: half the frame and k = 4 (for tests)");
+  cmd->add_flag("--quick", fp->quick,
+                "footprint: half the frame and k = 4; nurbs: half the frames' resolution, 20000 "
+                "tau samples, 1000 at rtl (for tests)");
   auto log2_virtual = std::make_shared<int>(ClipmapSweepArgs{}.log2_virtual);
   cmd->add_option("--log2-virtual", *log2_virtual,
                   "clipmap: log2 of the terrain's side (up to 10 the frames are also rendered from "
@@ -351,6 +365,18 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       a.synth = args->synth;
       a.markdown = args->markdown;
       sweep_clipmap(a);
+    } else if (args->block == "nurbs") {
+      for (const char* o : {"--k", "--out"}) {
+        if (cmd->count(o) > 0) throw CLI::ValidationError(o, "not for `sweep nurbs`");
+      }
+      if (args->requests < 1) throw CLI::ValidationError("--requests", "at least 1");
+      NurbsSweepArgs a;
+      if (cmd->count("--settings") > 0) a.settings = args->settings;
+      if (cmd->count("--requests") > 0) a.tau_samples = static_cast<size_t>(args->requests);
+      a.scene = fp->scene;
+      a.quick = fp->quick;
+      a.markdown = args->markdown;
+      sweep_nurbs(a);
     } else if (args->block == "footprint") {
       for (const char* o : {"--settings", "--requests", "--no-synth"}) {
         if (cmd->count(o) > 0) throw CLI::ValidationError(o, "only for `sweep trilinear`");

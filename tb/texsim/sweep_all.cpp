@@ -19,6 +19,7 @@
 #include "texsim/sweep_footprint.hpp"
 #include "texsim/sweep_footprint_setup.hpp"
 #include "texsim/sweep_mipgen.hpp"
+#include "texsim/sweep_nurbs.hpp"
 #include "texsim/sweep_perlin.hpp"
 #include "texsim/sweep_support.hpp"
 
@@ -89,6 +90,22 @@ const Section kSections[] = {
      "(golden both: what clipping costs, not what fixed point costs). Below: loads against the "
      "camera's speed, and the unit's hardware at the default tile.",
      "clipmap.md"},
+    {"NURBS texturing (004)", "nurbs",
+     "Settings: the tessellation thresholds of claims 8-11 (MC in modelling units, DC in pixels, "
+     "TC in texels of level 0, and DC with TC averaged by g = mean), up to 1024 steps a patch and "
+     "direction so that the thresholds decide, on scenes/nurbs_freeform.json with every material "
+     "in order tc (claim 16: tau at the vertices, (u, v) interpolated, so a threshold moves both "
+     "the geometry and the texture). Error: the golden frame against the reference, the same "
+     "scene at the ideal engine tessellated through quarter-pixel steps (DC 0.25: the surface "
+     "within a small fraction of a pixel, not ray cast) and in order pc, tau applied per pixel "
+     "in double precision to the exactly interpolated (s, t); PSNR and max / mean error (RGB, "
+     "8-bit levels) over the pixels both frames cover, the pixels only one covers counted (the "
+     "max error is a few isolated pixels near edges until the steps are about a pixel). Cost: "
+     "triangles, the front end's time (tessellation and rasterization) and the units' cycles "
+     "(golden's, the page model's prediction: the texture's accesses, nearly the same for every "
+     "row). "
+     "Below: the tau unit's grid against the functional map, and the four composition orders.",
+     "nurbs_sweep.md"},
 };
 
 void run_block_sweeps(const SweepAllArgs& args, const fs::path& data) {
@@ -127,6 +144,10 @@ void run_block_sweeps(const SweepAllArgs& args, const fs::path& data) {
   clip.synth = args.synth;
   clip.markdown = md("clipmap");
   sweep_clipmap(clip);
+
+  NurbsSweepArgs nurbs;
+  nurbs.markdown = md("nurbs");
+  sweep_nurbs(nurbs);
 }
 
 // The first line of `path` holding `key` (e.g. "model name" in /proc/cpuinfo), after its ':'.
@@ -184,6 +205,29 @@ std::string section_tail(const std::string& stem, const fs::path& data) {
            "resident (0.46 %, 99.5 % saved; the patent writes about 6 M of 1.365 G, 99.6 %, its G "
            "being 2^30). Rendered as a long run: `texsim sweep clipmap --log2-virtual 15 "
            "--settings 10` (docs/clipmap.md).\n\n";
+  }
+  if (stem == "nurbs") {
+    return "### NURBS texturing: the tau unit's grid (claims 4-6)\n\n"
+           "The wave map (u = s + 0.05 sin(2 pi 1.5 t), v alike) on 256 x 256 texels, as a render "
+           "loads it into the tau unit (the map sampled at the grid's nodes, rounded to "
+           "TexCoord), golden against the functional map on 200 000 random (s, t) and screen "
+           "derivatives (a quarter texel to 64 texels a pixel); |delta (u, v)| in texels, lambda "
+           "in levels. The affine rows sample where the unit's 12-bit weight fractions are exact: "
+           "an affine map comes out exact in either interpolation (the lambda error there is the "
+           "log2 table's); the last one samples anywhere (the weights' truncation). At 1 cell the "
+           "spline's stencil holds two extrapolated nodes, a line: it is the linear grid; at 2 "
+           "cells neither grid resolves the wave's 1.5 periods. rtl = golden on the first 4000 "
+           "samples of each row; cycles per sample at rtl once the grid is loaded.\n\n" +
+           read_file(data / "nurbs_tau.md") +
+           "\n### NURBS texturing: the composition orders (claims 15-18)\n\n"
+           "scenes/nurbs_orders.json's first sphere alone, in the middle of the frame (wave tau, "
+           "8 x 8 spline grid, its own tessellation, DC 12), in each order against the same kind "
+           "of reference, and in order pc with twice the grid's cells (16 x 16): what order pc "
+           "loses to tc here is the 8 x 8 tau grid's error. Errors of golden's frame; unit cycles "
+           "at rtl, rendered with "
+           "the unit-by-unit check against golden (rtl = golden: every pixel and every unit's "
+           "outputs, requests and counters).\n\n" +
+           read_file(data / "nurbs_orders.md") + "\n";
   }
   return "";
 }
