@@ -224,7 +224,7 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       "unit per grid\n"
       "size and interpolation against the functional map, rtl = golden; the orders pc, tc, "
       "texture, composed\n"
-      "on a sphere (docs/nurbs_sweep.md).\n"
+      "on a sphere (docs/nurbs.md).\n"
       "all: every sweep above, the model-level table (texsim levels) and the default scene at "
       "every engine, with\n"
       "a plot per block (scripts/plot_accuracy.py): writes DIR/accuracy.md and DIR/accuracy/ "

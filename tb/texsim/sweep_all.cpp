@@ -105,7 +105,7 @@ const Section kSections[] = {
      "(golden's, the page model's prediction: the texture's accesses, nearly the same for every "
      "row). "
      "Below: the tau unit's grid against the functional map, and the four composition orders.",
-     "nurbs_sweep.md"},
+     "nurbs.md"},
 };
 
 void run_block_sweeps(const SweepAllArgs& args, const fs::path& data) {
