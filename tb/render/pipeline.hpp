@@ -20,6 +20,7 @@
 #include "ccc/ccc_texture.hpp"
 #include "geometry/mesh.hpp"
 #include "raster/fragment.hpp"
+#include "raster/rasterizer.hpp"
 #include "render/effect_maps.hpp"
 #include "render/units.hpp"
 #include "scene/scene.hpp"
@@ -50,6 +51,7 @@ UnitRun texture_unit(const host::Material& material, const MaterialTexture& text
 // Orders texture and composed (004 claims 17, 18): the material samples its texture at the
 // vertices (Pipeline::colour_vertices), and its fragments carry the interpolated colours.
 bool samples_at_vertices(const host::Material& material);
+bool samples_at_vertices_anywhere(const host::Scene& scene);
 
 // The ideal model of texture_unit for one fragment, with `sampler` (the material's, or a copy).
 glm::dvec4 ideal_texture(const host::Material& material, const MaterialTexture& texture,
@@ -115,5 +117,10 @@ class Pipeline {
   std::vector<HostWork> host_work_;
   void note_host_work(const HostWork& w);
 };
+
+// The front end: every object's mesh (NURBS objects tessellated), the vertex colours of the
+// orders texture and composed through `pipe`, rasterized for rows [row_begin, row_end).
+std::vector<host::Fragment> front_end(const host::Scene& scene, Pipeline& pipe, int row_begin,
+                                      int row_end, host::RasterStats* stats);
 
 }  // namespace tmu::render

@@ -51,20 +51,6 @@ ImageRgb8 compose(const host::Scene& scene, const Band& band,
 }
 
 // A "hot" colour ramp for error maps: black, red, yellow, white as t goes 0 -> 1.
-bool samples_at_vertices_anywhere(const host::Scene& scene) {
-  return std::any_of(scene.materials.begin(), scene.materials.end(),
-                     [](const host::Material& m) { return samples_at_vertices(m); });
-}
-
-// The front end: every object's mesh (NURBS objects tessellated), the vertex colours of the
-// orders texture and composed through `pipe`, rasterized for the band.
-std::vector<host::Fragment> front_end(const host::Scene& scene, Pipeline& pipe, const Band& band,
-                                      host::RasterStats* stats) {
-  std::vector<host::Mesh> meshes = host::make_meshes(scene, pipe.texture_sizes());
-  pipe.colour_vertices(meshes);
-  return host::rasterize(scene, meshes, pipe.uv_scales(), band.row_begin, band.row_end, stats);
-}
-
 Rgb8 hot(double t) {
   auto c = [](double v) {
     return static_cast<uint8_t>(std::lround(255 * std::clamp(v, 0.0, 1.0)));
@@ -147,7 +133,7 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
     }
     rep.raster.fragments = rep.raster.visible = records.size();
   } else {
-    fragments = front_end(scene, pipe, band, &rep.raster);
+    fragments = front_end(scene, pipe, band.row_begin, band.row_end, &rep.raster);
     for (const host::Fragment& f : fragments) records.push_back(host::quantize(f));
   }
   rep.front_end_s = since(t);
@@ -208,7 +194,8 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
   if (o.check) {
     Pipeline ref(scene, *o.check);
     // Its own vertex units, for the unit check (the pixels compare on this run's fragments).
-    if (samples_at_vertices_anywhere(scene)) front_end(scene, ref, band, nullptr);
+    if (samples_at_vertices_anywhere(scene))
+      front_end(scene, ref, band.row_begin, band.row_end, nullptr);
     const std::vector<uint32_t> expected = ref.shade(records, &fragments, nullptr);
     CheckReport c;
     c.against = std::string(name(*o.check));
@@ -271,7 +258,9 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
     std::vector<glm::dvec4> exact;
     // Orders texture and composed: the ideal's own vertex colours, interpolated.
     const std::vector<host::Fragment> ideal_fragments =
-        samples_at_vertices_anywhere(scene) ? front_end(scene, ip, band, nullptr) : fragments;
+        samples_at_vertices_anywhere(scene)
+            ? front_end(scene, ip, band.row_begin, band.row_end, nullptr)
+            : fragments;
     ip.shade(records, &ideal_fragments, &exact);
     CompareReport c;
     ImageRgb8 heat(width, band.row_end - band.row_begin);

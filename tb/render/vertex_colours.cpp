@@ -4,6 +4,7 @@
 // derivatives zero (one probe), and for composed the vertex's shade through the unit's eq. 5;
 // the rasterizer interpolates the colours, and shade() composes (texture) or takes them as
 // they are (composed).
+#include <algorithm>
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "raster/shading.hpp"
@@ -13,6 +14,18 @@ namespace tmu::render {
 
 bool samples_at_vertices(const host::Material& m) {
   return m.order == host::Material::Order::kTexture || m.order == host::Material::Order::kComposed;
+}
+
+bool samples_at_vertices_anywhere(const host::Scene& scene) {
+  return std::any_of(scene.materials.begin(), scene.materials.end(),
+                     [](const host::Material& m) { return samples_at_vertices(m); });
+}
+
+std::vector<host::Fragment> front_end(const host::Scene& scene, Pipeline& pipe, int row_begin,
+                                      int row_end, host::RasterStats* stats) {
+  std::vector<host::Mesh> meshes = host::make_meshes(scene, pipe.texture_sizes());
+  pipe.colour_vertices(meshes);
+  return host::rasterize(scene, meshes, pipe.uv_scales(), row_begin, row_end, stats);
 }
 
 void Pipeline::colour_vertices(std::vector<host::Mesh>& meshes) {

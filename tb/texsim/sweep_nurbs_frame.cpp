@@ -31,11 +31,6 @@ uint64_t unit_cycles(const std::vector<render::UnitRun>& units) {
   return n;
 }
 
-bool samples_at_vertices_anywhere(const host::Scene& scene) {
-  return std::any_of(scene.materials.begin(), scene.materials.end(),
-                     [](const host::Material& m) { return render::samples_at_vertices(m); });
-}
-
 }  // namespace
 
 NurbsFrame render_frame(const host::Scene& scene, render::Level level,
@@ -47,8 +42,8 @@ NurbsFrame render_frame(const host::Scene& scene, render::Level level,
   frame.covered.assign(pixels, 0);
   frame.colour.assign(pixels, glm::dvec3(0));
 
-  // The front end as render.cpp's: meshes, the vertex colours (orders texture and composed),
-  // the fragments. The vertex colours are the units' work, not the front end's: not timed.
+  // render::front_end's steps, timed apart: the vertex colours (orders texture and composed)
+  // are the units' work, not the front end's.
   render::Pipeline pipe(scene, level);
   auto t = Clock::now();
   std::vector<host::Mesh> meshes = host::make_meshes(scene, pipe.texture_sizes());
@@ -80,10 +75,7 @@ NurbsFrame render_frame(const host::Scene& scene, render::Level level,
   if (check) {
     render::Pipeline ref(scene, *check);
     // Its own vertex units, for the unit check; the pixels compare on this run's fragments.
-    if (samples_at_vertices_anywhere(scene)) {
-      std::vector<host::Mesh> ref_meshes = host::make_meshes(scene, ref.texture_sizes());
-      ref.colour_vertices(ref_meshes);
-    }
+    if (render::samples_at_vertices_anywhere(scene)) render::front_end(scene, ref, 0, -1, nullptr);
     const std::vector<uint32_t> expected = ref.shade(records, &fragments, nullptr, nullptr);
     frame.equals_check = expected == rgba && render::check_units(pipe.units(), ref.units()).match();
   }
