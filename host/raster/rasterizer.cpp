@@ -23,6 +23,7 @@
 #include "raster/coverage.hpp"
 #include "raster/shading.hpp"
 #include "raster/triangle_setup.hpp"
+#include "raster/view.hpp"
 
 namespace tmu::host {
 namespace {
@@ -45,17 +46,7 @@ struct Frame {
   glm::dvec3 eye;
 };
 
-Frame make_frame(const Camera& c) {
-  const glm::dmat4 view = glm::lookAtRH(c.position, c.target, c.up);
-  const glm::dmat4 projection = glm::perspectiveRH_ZO(
-      glm::radians(c.fov_deg), static_cast<double>(c.width) / static_cast<double>(c.height), c.near,
-      c.far);
-  return {c.width, c.height, projection * view, c.position};
-}
-
-glm::dvec2 to_screen(const glm::dvec4& clip, const Frame& f) {
-  return {(clip.x / clip.w + 1.0) * 0.5 * f.width, (1.0 - clip.y / clip.w) * 0.5 * f.height};
-}
+Frame make_frame(const Camera& c) { return {c.width, c.height, view_projection(c), c.position}; }
 
 // det [x y w] of the clip-space rows: proportional (with a positive factor) to the triple
 // product of the eye-space vertices with the eye at the origin, so its sign says which side
@@ -137,7 +128,7 @@ class Rasterizer {
     if (poly.count < 3) return;
     std::array<SubpixelPoint, ClipPolygon::kCapacity> s{};
     for (size_t i = 0; i < static_cast<size_t>(poly.count); ++i)
-      s[i] = snap(to_screen(poly.v[i], frame_));
+      s[i] = snap(to_screen(poly.v[i], frame_.width, frame_.height));
 
     std::optional<uint32_t> id;  // set up on the first piece that reaches the band
     for (size_t i = 1; i + 1 < static_cast<size_t>(poly.count); ++i) {
@@ -201,6 +192,18 @@ class Rasterizer {
 };
 
 }  // namespace
+
+glm::dmat4 view_projection(const Camera& c) {
+  const glm::dmat4 view = glm::lookAtRH(c.position, c.target, c.up);
+  const glm::dmat4 projection = glm::perspectiveRH_ZO(
+      glm::radians(c.fov_deg), static_cast<double>(c.width) / static_cast<double>(c.height), c.near,
+      c.far);
+  return projection * view;
+}
+
+glm::dvec2 to_screen(const glm::dvec4& clip, int width, int height) {
+  return {(clip.x / clip.w + 1.0) * 0.5 * width, (1.0 - clip.y / clip.w) * 0.5 * height};
+}
 
 std::vector<Fragment> rasterize(const Scene& scene, const std::vector<Mesh>& meshes,
                                 const std::vector<glm::ivec2>& texture_sizes, int row_begin,

@@ -4,13 +4,13 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 #include <optional>
 
 #include "common/image.hpp"
 #include "geometry/mesh.hpp"
 #include "nurbs/nurbs_mesh.hpp"
+#include "raster/view.hpp"
 #include "scene/scene.hpp"
 #include "texsim/commands.hpp"
 
@@ -30,10 +30,7 @@ std::string pair(const std::optional<glm::ivec2>& n) {
 // the others dim, on black.
 ImageRgb8 wireframe(const host::Scene& scene, const std::vector<host::Mesh>& meshes) {
   const host::Camera& c = scene.camera;
-  const glm::dmat4 vp =
-      glm::perspectiveRH_ZO(glm::radians(c.fov_deg), static_cast<double>(c.width) / c.height,
-                            c.near, c.far) *
-      glm::lookAtRH(c.position, c.target, c.up);
+  const glm::dmat4 vp = host::view_projection(c);
   ImageRgb8 image(c.width, c.height);
   for (size_t o = 0; o < meshes.size(); ++o) {
     const bool nurbs = scene.objects[o].shape == host::Object::Shape::kNurbs;
@@ -47,7 +44,7 @@ ImageRgb8 wireframe(const host::Scene& scene, const std::vector<host::Mesh>& mes
       for (int k = 0; k < 3; ++k) {
         const glm::dvec4 q = mvp * glm::dvec4(m.vertices[t[static_cast<size_t>(k)]].position, 1.0);
         if (q.w <= c.near) visible = false;
-        p[k] = {(q.x / q.w + 1) * 0.5 * c.width, (1 - q.y / q.w) * 0.5 * c.height};
+        p[k] = host::to_screen(q, c.width, c.height);
       }
       // Counter-clockwise from the eye is a negative area with y down (a mirror flips it).
       const double area =
