@@ -162,14 +162,7 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
     UnitReport ur{u.name(),         u.kind, static_cast<uint64_t>(u.result.outputs.size()),
                   u.result.cycles,  false,  u.result.seconds,
                   u.result.counters};
-    // Golden is untimed; the trilinear unit is memory-bound, one period per access.
-    if (ur.cycles == 0) {
-      const auto accesses = tb::counter_value(u.result.counters, "accesses");
-      if (accesses) {
-        ur.cycles = *accesses + tb::counter_value(u.result.counters, "slow_accesses").value_or(0);
-        ur.predicted = true;
-      }
-    }
+    ur.cycles = unit_cycles(u, &ur.predicted);
     rep.units.push_back(std::move(ur));
   }
 

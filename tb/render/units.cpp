@@ -49,6 +49,15 @@ void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options) {
   for (const std::string& key : unit.census_keys()) census(key).cycles += unit.result.cycles;
 }
 
+uint64_t unit_cycles(const UnitRun& unit, bool* predicted) {
+  if (predicted) *predicted = false;
+  if (unit.result.cycles != 0) return unit.result.cycles;
+  const auto accesses = tb::counter_value(unit.result.counters, "accesses");
+  if (!accesses) return 0;
+  if (predicted) *predicted = true;
+  return *accesses + tb::counter_value(unit.result.counters, "slow_accesses").value_or(0);
+}
+
 std::vector<tb::Txn> run_and_keep(UnitRun unit, Level level,
                                   std::vector<size_t> fragments_of_outputs,
                                   std::vector<UnitRun>& units,

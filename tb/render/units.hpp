@@ -75,6 +75,11 @@ void attach(UnitRun& run, std::shared_ptr<Block> block) {
   };
 }
 
+// A unit's cycles: its own, or for an untimed golden unit the memory periods its counters
+// predict (the trilinear unit is memory-bound: one period per access, two for a slow one);
+// `predicted` says which. 0 for an untimed unit without those counters.
+uint64_t unit_cycles(const UnitRun& unit, bool* predicted = nullptr);
+
 // Runs a unit's engine at `level` (not ideal) over its items and records it in the census.
 void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options);
 

@@ -16,18 +16,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// What render_scene reports as a unit's cycles: its own, or for an untimed golden unit the
-// memory periods its counters give (one per access, two for a slow one).
+// What render_scene reports: each unit's cycles, predicted for untimed golden units.
 uint64_t unit_cycles(const std::vector<render::UnitRun>& units) {
   uint64_t n = 0;
-  for (const render::UnitRun& u : units) {
-    uint64_t c = u.result.cycles;
-    if (c == 0) {
-      if (const auto accesses = tb::counter_value(u.result.counters, "accesses"))
-        c = *accesses + tb::counter_value(u.result.counters, "slow_accesses").value_or(0);
-    }
-    n += c;
-  }
+  for (const render::UnitRun& u : units) n += render::unit_cycles(u);
   return n;
 }
 
