@@ -23,6 +23,14 @@ echo "$out"
 [[ -f "$work/table.csv" && -f "$work/table_tau.md" && -f "$work/table_orders.md" ]] &&
   pass "the three tables and the CSV" || fail "missing tables: $(ls "$work")"
 
+# The reference puts every NURBS fragment on the surface: Newton finds a hit for each.
+for what in thresholds orders; do
+  line=$(grep "reference for the $what" <<<"$out")
+  [[ $line =~ \(([0-9]+)\ moved,\ 0\ kept ]] && ((BASH_REMATCH[1] > 1000)) &&
+    pass "reference for the $what: ${BASH_REMATCH[1]} fragments on the surface, none kept" ||
+    fail "reference for the $what: '$line'"
+done
+
 for pair in "DC 16:DC 2" "TC 32:TC 4"; do
   coarse=${pair%%:*} fine=${pair##*:}
   tc=$(column "$coarse" "triangles [model]") tf=$(column "$fine" "triangles [model]")

@@ -10,6 +10,7 @@ namespace tmu::host {
 
 struct Fragment {
   int x = 0, y = 0;            // pixel
+  int object = 0;              // Scene::objects index
   int material = 0;            // Scene::materials index
   double depth = 0;            // NDC z (0 near .. 1 far), the depth test's key
   glm::dvec2 uv{0};            // texels of level 0 of the material's texture, centres at i + 0.5

@@ -35,7 +35,7 @@ struct Winner {
 
 struct DrawnTriangle {
   TriangleSetup setup;
-  int material;
+  int object, material;
   glm::dvec3 face_normal;  // world, unit: the fallback where interpolated normals cancel
   double lod;              // a fixed lambda (004 claim 12), or NaN: per pixel
 };
@@ -67,7 +67,8 @@ class Rasterizer {
         winners_(static_cast<size_t>(scene.camera.width) *
                  static_cast<size_t>(row_end - row_begin)) {}
 
-  void draw(const Object& object, const Mesh& mesh, const glm::ivec2& texture_size) {
+  void draw(int object_index, const Mesh& mesh, const glm::ivec2& texture_size) {
+    const Object& object = scene_.objects[static_cast<size_t>(object_index)];
     const glm::dmat4 model = object.transform.matrix();
     const glm::dmat3 linear(model);
     const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
@@ -89,7 +90,7 @@ class Rasterizer {
     for (const auto& t : mesh.triangles) {
       std::array<SetupVertex, 3> tri = {vs[t[0]], vs[t[1]], vs[t[2]]};
       if (mirrored) std::swap(tri[1], tri[2]);
-      draw_triangle(tri, object.material, mesh.vertices[t[0]].lod);
+      draw_triangle(tri, object_index, object.material, mesh.vertices[t[0]].lod);
     }
   }
 
@@ -120,7 +121,7 @@ class Rasterizer {
                     static_cast<size_t>(x)];
   }
 
-  void draw_triangle(const std::array<SetupVertex, 3>& tri, int material, double lod) {
+  void draw_triangle(const std::array<SetupVertex, 3>& tri, int object, int material, double lod) {
     // Back faces (and triangles seen edge-on, and degenerate ones) are culled: front faces
     // are counter-clockwise seen from the eye, as the meshes are from outside.
     if (!(facing(tri[0].clip, tri[1].clip, tri[2].clip) > 0)) return;
@@ -145,7 +146,7 @@ class Rasterizer {
         if (!setup) return;
         const glm::dvec3 g = glm::cross(tri[1].world - tri[0].world, tri[2].world - tri[0].world);
         const double len = glm::length(g);
-        drawn_.push_back({*setup, material, len > 0 ? g / len : glm::dvec3(0, 0, 1), lod});
+        drawn_.push_back({*setup, object, material, len > 0 ? g / len : glm::dvec3(0, 0, 1), lod});
         id = static_cast<uint32_t>(drawn_.size() - 1);
       }
       ++triangles_;
@@ -164,6 +165,7 @@ class Rasterizer {
     Fragment f;
     f.x = x;
     f.y = y;
+    f.object = t.object;
     f.material = t.material;
     f.depth = v.depth;
     f.uv = v.uv;
@@ -205,6 +207,12 @@ glm::dvec2 to_screen(const glm::dvec4& clip, int width, int height) {
   return {(clip.x / clip.w + 1.0) * 0.5 * width, (1.0 - clip.y / clip.w) * 0.5 * height};
 }
 
+Ray pixel_ray(const Camera& camera, double x, double y) {
+  const glm::dvec4 ndc(2.0 * x / camera.width - 1.0, 1.0 - 2.0 * y / camera.height, 1.0, 1.0);
+  const glm::dvec4 far = glm::inverse(view_projection(camera)) * ndc;
+  return {camera.position, glm::dvec3(far) / far.w - camera.position};
+}
+
 std::vector<Fragment> rasterize(const Scene& scene, const std::vector<Mesh>& meshes,
                                 const std::vector<glm::ivec2>& texture_sizes, int row_begin,
                                 int row_end, RasterStats* stats) {
@@ -229,7 +237,7 @@ std::vector<Fragment> rasterize(const Scene& scene, const std::vector<Mesh>& mes
   Rasterizer r(scene, row_begin, row_end);
   for (size_t i = 0; i < meshes.size(); ++i) {
     const Object& o = scene.objects[i];
-    r.draw(o, meshes[i], texture_sizes[static_cast<size_t>(o.material)]);
+    r.draw(static_cast<int>(i), meshes[i], texture_sizes[static_cast<size_t>(o.material)]);
   }
   return r.fragments(stats);
 }

@@ -220,7 +220,7 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       "cycles and cells at the default tile (docs/clipmap.md).\n"
       "nurbs: NURBS texturing (004) per tessellation threshold (MC, DC, TC, combined; order tc): "
       "triangles,\n"
-      "front-end time, cycles, PSNR against an ideal quarter-pixel order-pc reference; the tau "
+      "front-end time, cycles, PSNR against an ideal order-pc reference on the surface; the tau "
       "unit per grid\n"
       "size and interpolation against the functional map, rtl = golden; the orders pc, tc, "
       "texture, composed\n"

@@ -23,7 +23,9 @@ using host::Material;
 using host::Tessellation;
 using render::Level;
 
-// The reference's tessellation: quarter-pixel steps, and enough of them for the largest patch.
+// The reference's tessellation: quarter-pixel steps, and enough of them for the largest patch;
+// it decides which object a pixel shows and where Newton starts (reference_render then puts
+// every fragment on the true surface).
 constexpr double kReferenceDc = 0.25;
 constexpr int kMaxSteps = 1024;
 
@@ -159,11 +161,15 @@ std::string psnr_text(double psnr) {
 
 NurbsFrame reference_frame(const host::Scene& scene, const std::string& what) {
   const auto t = std::chrono::steady_clock::now();
-  NurbsFrame ref = render_frame(reference_of(scene), Level::kIdeal);
+  ReferenceStats stats;
+  NurbsFrame ref = reference_render(reference_of(scene), &stats);
   fmt::print(
-      "  reference for {}: ideal, order pc, DC {}: {} triangles, front end {:.2f} s, "
-      "{:.1f} s in all\n",
-      what, kReferenceDc, ref.triangles, ref.front_end_s,
+      "  reference for {}: ideal, order pc, DC {} ({} triangles), then each fragment onto the "
+      "surface along its pixel's ray ({} moved, {} kept: no hit), which changed the frame by "
+      "{} dB PSNR, max {:.2f}, mean {:.4f}; front end {:.2f} s, {:.1f} s in all\n",
+      what, kReferenceDc, ref.triangles, stats.moved, stats.kept,
+      psnr_text(stats.tessellation_error.psnr), stats.tessellation_error.max,
+      stats.tessellation_error.mean, ref.front_end_s,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
   return ref;
 }

@@ -10,11 +10,12 @@
 // 3. Per composition order (claims 15-18: pc, tc, texture, composed) on one sphere of
 //    scenes/nurbs_orders.json: the error against the reference, the rtl's cycles, rtl = golden.
 //
-// The reference is the same scene at the ideal engine, tessellated through quarter-pixel steps
-// (DC 0.25, up to 1024 steps a patch and direction) and in order pc, so that tau is applied per
-// pixel in double precision to exactly interpolated (s, t) (render/tau_stage.cpp ideal_tau):
-// the surface within a small fraction of a pixel, not ray cast. Errors are taken over the
-// pixels both frames cover; the pixels only one covers are counted.
+// The reference is the same scene at the ideal engine in order pc, tessellated through
+// quarter-pixel steps (DC 0.25, up to 1024 steps a patch and direction), and then every fragment
+// moved onto the true surface along its pixel's ray (sweep_nurbs_frame.hpp reference_render,
+// nurbs/ray_hit.hpp): tau is applied per pixel in double precision (render/tau_stage.cpp
+// ideal_tau) to the exact (s, t) and screen derivatives. Errors are taken over the pixels both
+// frames cover; the pixels only one covers are counted.
 #pragma once
 
 #include <cstddef>

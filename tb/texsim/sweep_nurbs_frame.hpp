@@ -38,4 +38,17 @@ struct NurbsFrameError {
 };
 NurbsFrameError frame_error(const NurbsFrame& got, const NurbsFrame& reference);
 
+struct ReferenceStats {
+  uint64_t moved = 0;  // fragments put on the surface
+  uint64_t kept = 0;   // fragments Newton found no hit for (grazing rays), left as they were
+  NurbsFrameError tessellation_error;  // the frame before the move against the one after
+};
+
+// The reference: `scene` rendered at ideal with every fragment of a NURBS object whose
+// parameter coordinates reach the units as they are (order pc, or no tau) moved onto the true
+// surface (nurbs/ray_hit.hpp): its (s, t), their screen derivatives, its normal and lighting
+// from the ray through the pixel's centre, not from the triangle under it. The tessellation
+// still decides which pixels an object covers and where Newton starts.
+NurbsFrame reference_render(const host::Scene& scene, ReferenceStats* stats);
+
 }  // namespace tmu::texsim
