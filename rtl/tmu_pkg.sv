@@ -310,6 +310,26 @@ package tmu_pkg;
   localparam int unsigned TauInterpFrac = 0;
   typedef logic [TauInterpW-1:0] tau_interp_t;
 
+  // DrfIndex: UQ3.0, TEXRAM chip: a description register file 1..7 (0: none, as a link the chain's end)
+  localparam int unsigned DrfIndexW = 3;
+  localparam int unsigned DrfIndexFrac = 0;
+  typedef logic [DrfIndexW-1:0] drf_index_t;
+
+  // DrfField: UQ4.0, TEXRAM chip DRF write: 0 base, 1 shape, 2 border colour, 3 constant, 4 control, 5..10 cube faces +X..-Z (DRF 7)
+  localparam int unsigned DrfFieldW = 4;
+  localparam int unsigned DrfFieldFrac = 0;
+  typedef logic [DrfFieldW-1:0] drf_field_t;
+
+  // DrfValue: UQ32.0, TEXRAM chip DRF write: a field's value (golden/texram/chip/drf.hpp packs them)
+  localparam int unsigned DrfValueW = 32;
+  localparam int unsigned DrfValueFrac = 0;
+  typedef logic [DrfValueW-1:0] drf_value_t;
+
+  // DrfOp: UQ3.0, TEXRAM chip: what a DRF's sample does: 0 texture (eq. 5), 1 shading map (I_d), 2 reflectance (R), 3 environment (E, eq. 6-7, ends the pixel), 4 emit (leaves the chip)
+  localparam int unsigned DrfOpW = 3;
+  localparam int unsigned DrfOpFrac = 0;
+  typedef logic [DrfOpW-1:0] drf_op_t;
+
   // largest texture side in texels
   localparam int unsigned MaxTexSize = 4096;
 
@@ -330,6 +350,9 @@ package tmu_pkg;
 
   // TEXRAM memory banks
   localparam int unsigned Banks = 8;
+
+  // TEXRAM chip: description register files, numbered 1..7; 7 holds a cube map
+  localparam int unsigned Drfs = 7;
 
   // footprint assembly: at most 2^4 = 16 probes per fragment
   localparam int unsigned MaxProbeLog2 = 4;

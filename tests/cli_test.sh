@@ -36,7 +36,7 @@ run() {
 }
 
 for cmd in "" "cosim" "ccc" "ccc encode" "ccc decode" "ccc roundtrip" "formats" "pattern" "sample" "mipgen" \
-  "sweep" "render" "merge" "levels" "terrain" "nurbs"; do
+  "sweep" "render" "merge" "levels" "terrain" "nurbs" "drf"; do
   # shellcheck disable=SC2086
   expect "help: texsim $cmd" 0 "Usage" -- "$texsim" $cmd --help
 done
@@ -155,6 +155,15 @@ expect "a fly-over has no ideal render" 2 "golden, hls or rtl" -- \
   "$texsim" render "$root/scenes/flyover.json" --engine ideal --out rx
 expect "--frames is for fly-overs" 2 "fly-over" -- \
   "$texsim" render "$root/scenes/plain.json" --frames 1 --out rx
+# The TEXRAM chip (000 §14): a scene's DRF programs and memory map; too few chips is an error
+# naming the material that did not fit.
+expect "texsim drf prints the chain of a linked material" 0 \
+  "varnish +chip 1, DRF 1 -> 2 -> 3 -> 4 -> 7" -- "$texsim" drf "$root/scenes/reflect.json"
+expect "texsim drf --writes lists the write port's words" 0 "write port \(drf, field, value\)" -- \
+  "$texsim" drf "$root/scenes/default.json" --writes
+expect "texsim drf: a second palette needs a second chip" 2 \
+  "materials.label: does not fit in the 1 chip given; chip 0: its CLUT holds another palette" -- \
+  "$texsim" drf "$root/scenes/default.json" --chips 1
 # NURBS (004): the tessellation report and its wireframe; a bad knot vector names the patch.
 expect "texsim nurbs reports each patch's steps" 0 "patch   8: MC/DC .* steps" -- \
   "$texsim" nurbs "$root/scenes/nurbs_freeform.json" --dc 8 --wireframe wire.png

@@ -66,6 +66,7 @@ struct SamplerConfig {
   uint32_t constant_rgba = 0;  // k_T, RGBA8888
   Addressing addressing = Addressing::kTexel;
   Widths widths;
+  friend bool operator==(const SamplerConfig&, const SamplerConfig&) = default;
 };
 
 // One sample request: raw port values.

@@ -84,7 +84,8 @@ footprint::Request near_eye(std::mt19937_64& rng, const ClipSetup& s) {
   const int64_t reach = int64_t{4} << s.config.log2_tile;
   footprint::Request r = fragments::random(rng, reach * kOne, reach * kOne);
   const auto shift = [&](int32_t c, double eye) {
-    return fragments::clamp_coord(c + std::llround((eye - reach / 2.0) * kOne));
+    return fragments::clamp_coord(c +
+                                  std::llround((eye - static_cast<double>(reach) / 2.0) * kOne));
   };
   r.u = shift(r.u, s.eye_u);
   r.v = shift(r.v, s.eye_v);

@@ -1,0 +1,204 @@
+#include "render/drf_compile.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "common/error.hpp"
+#include "texram/chip/chip_memory.hpp"
+#include "texram/page_model.hpp"
+
+namespace tmu::render {
+namespace {
+
+using texram::chip::DrfOp;
+using texram::chip::kCubeDrf;
+using texram::chip::kDrfs;
+
+constexpr const char* kFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+constexpr uint32_t kPageCells = uint32_t{1} << texram::kPageBits;
+
+// One DRF of a material's chain before placement.
+struct Step {
+  std::string role;  // "" for the texture, else the map's role
+  const texram::TexramTexture* texture = nullptr;
+  texram::SamplerConfig sampler;
+  DrfOp op = DrfOp::kTexture;
+  bool takes_coords = false;
+  std::string parameter;  // what its parameter transaction carries (takes_coords or the lead)
+  std::array<const texram::TexramTexture*, 6> faces{};  // a cube map
+};
+
+bool needs_clut(const texram::TexramTexture& t) {
+  return t.kind == texram::TexelKind::kIndex || t.kind == texram::TexelKind::kCcc;
+}
+
+uint32_t page_up(uint64_t cells) {
+  return static_cast<uint32_t>((cells + kPageCells - 1) / kPageCells * kPageCells);
+}
+
+// The chain of `mat` in effect_chain's order, or the reason it has none.
+std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex,
+                           std::string& why) {
+  if (mat.procedural) {
+    why = "procedural: the material unit (002), no TEXRAM map";
+    return {};
+  }
+  if (mat.unit == host::Material::Unit::kLowcost) {
+    why = "the CCC low-cost unit (000 §4): its own memory and block cache, not the TEXRAM";
+    return {};
+  }
+  const EffectMaps& maps = tex.effects;
+  std::vector<Step> steps;
+  const auto map_step = [](const std::string& role, const MapTexture& m, DrfOp op, bool takes,
+                           const std::string& parameter, texram::Addressing addressing) {
+    Step s{role, m.texture.get(), m.sampler, op, takes, parameter, {}};
+    s.sampler.addressing = addressing;
+    return s;
+  };
+  if (maps.bump) {
+    steps.push_back(map_step("bump", maps.bump, DrfOp::kEmit, false, "(u, v), lambda 0",
+                             texram::Addressing::kTexel));
+  }
+  if (maps.diffuse) {
+    steps.push_back(map_step("diffuse", maps.diffuse, DrfOp::kShading, true, "(uN, vN)",
+                             texram::Addressing::kSphere));
+  }
+  Step texture{
+      "", tex.texram.get(), mat.sampler, DrfOp::kTexture, !steps.empty(), "(u, v, lambda), I_d",
+      {}};
+  steps.push_back(texture);
+  if (maps.reflectance) {
+    steps.push_back(map_step("reflectance", maps.reflectance, DrfOp::kReflectance, false, "",
+                             texram::Addressing::kTexel));
+  }
+  if (maps.specular || maps.sphere) {
+    steps.push_back(map_step(maps.specular ? "specular" : "environment",
+                             maps.specular ? maps.specular : maps.sphere, DrfOp::kEnvironment, true,
+                             "(uN, vN)", texram::Addressing::kSphere));
+  } else if (maps.cube[0]) {
+    Step cube = map_step("environment", maps.cube[0], DrfOp::kEnvironment, true,
+                         "face, (u, v) on it", texram::Addressing::kTexel);
+    for (size_t f = 0; f < 6; ++f) cube.faces[f] = maps.cube[f].texture.get();
+    steps.push_back(cube);
+  }
+  return steps;
+}
+
+uint32_t cells_of(const Step& s) {
+  if (!s.faces[0]) return page_up(s.texture->geometry.bank_cells());
+  uint32_t n = 0;
+  for (const auto* f : s.faces) n += page_up(f->geometry.bank_cells());
+  return n;
+}
+
+// Why `chip` cannot take `steps`, or "".
+std::string no_room(const ChipProgram& chip, const std::vector<Step>& steps,
+                    const texram::Clut32* clut) {
+  bool cube = false;
+  uint64_t cells = 0;
+  for (const Step& s : steps) {
+    cube = cube || s.faces[0] != nullptr;
+    cells += cells_of(s);
+  }
+  // A cube map takes DRF 7; the rest of the chain the DRFs from used_drfs + 1 up.
+  if (cube && (chip.cube_used || chip.used_drfs >= kCubeDrf)) return "DRF 7 is taken";
+  const int plain = static_cast<int>(steps.size()) - (cube ? 1 : 0);
+  const int limit = chip.cube_used || cube ? kCubeDrf - 1 : kDrfs;
+  const int free_plain = std::max(0, limit - chip.used_drfs);
+  if (plain > free_plain) return fmt::format("{} DRFs left, {} needed", free_plain, plain);
+  if (chip.used_cells + cells > texram::chip::kBankCells) {
+    return fmt::format("{} cells a bank left, {} needed",
+                       texram::chip::kBankCells - chip.used_cells, cells);
+  }
+  if (clut && chip.clut && *chip.clut != *clut) return "its CLUT holds another palette";
+  return "";
+}
+
+}  // namespace
+
+ScenePrograms compile_drfs(const host::Scene& scene, const std::vector<MaterialTexture>& textures,
+                           int chips) {
+  ScenePrograms out;
+  out.chips.resize(static_cast<size_t>(chips));
+  for (size_t m = 0; m < scene.materials.size(); ++m) {
+    const host::Material& mat = scene.materials[m];
+    MaterialProgram prog;
+    prog.material = static_cast<int>(m);
+    const std::vector<Step> steps = steps_of(mat, textures[m], prog.why);
+    if (steps.empty()) {
+      out.materials.push_back(prog);
+      continue;
+    }
+    if (steps.size() > static_cast<size_t>(texram::chip::kMaxSteps)) {
+      throw InputError(scene.path, "materials." + mat.name,
+                       fmt::format("a chain of {} maps: the TEXRAM links at most {}", steps.size(),
+                                   texram::chip::kMaxSteps));
+    }
+    const texram::Clut32* clut = nullptr;
+    for (const Step& s : steps) {
+      if (needs_clut(*s.texture)) {
+        if (clut && *clut != s.texture->clut) {
+          throw InputError(scene.path, "materials." + mat.name,
+                           "two maps with different palettes: a chip has one CLUT");
+        }
+        clut = &s.texture->clut;
+      }
+    }
+    std::string reasons;
+    for (int c = 0; c < chips && prog.chip < 0; ++c) {
+      const std::string why = no_room(out.chips[static_cast<size_t>(c)], steps, clut);
+      if (why.empty()) {
+        prog.chip = c;
+      } else {
+        reasons += fmt::format("; chip {}: {}", c, why);
+      }
+    }
+    if (prog.chip < 0) {
+      throw InputError(scene.path, "materials." + mat.name,
+                       fmt::format("does not fit in the {} chip{} given{} (texsim: --chips)", chips,
+                                   chips == 1 ? "" : "s", reasons));
+    }
+    ChipProgram& chip = out.chips[static_cast<size_t>(prog.chip)];
+    if (clut) chip.clut = *clut;
+    // DRF numbers first, so each can name the next.
+    for (const Step& s : steps) {
+      if (s.faces[0]) {
+        prog.drfs.push_back(kCubeDrf);
+        chip.cube_used = true;
+      } else {
+        prog.drfs.push_back(++chip.used_drfs);
+      }
+    }
+    for (size_t k = 0; k < steps.size(); ++k) {
+      const Step& s = steps[k];
+      texram::chip::Drf& d = chip.drfs[static_cast<size_t>(prog.drfs[k] - 1)];
+      d.sampler = s.sampler;
+      d.log2_w = s.texture->geometry.log2_width();
+      d.log2_h = s.texture->geometry.log2_height();
+      d.op = s.op;
+      d.takes_coords = s.takes_coords;
+      d.link = k + 1 < steps.size() ? prog.drfs[k + 1] : 0;
+      const std::string label = mat.name + (s.role.empty() ? "" : "." + s.role);
+      const auto place = [&](const texram::TexramTexture& t, const std::string& name) {
+        const uint32_t base = chip.used_cells;
+        chip.used_cells += page_up(t.geometry.bank_cells());
+        chip.maps.push_back({name, prog.material, prog.drfs[k], base, t.geometry.bank_cells()});
+        return base;
+      };
+      if (s.faces[0]) {
+        d.cube = true;
+        for (size_t f = 0; f < 6; ++f) d.face_base[f] = place(*s.faces[f], label + kFaceNames[f]);
+        d.base = d.face_base[0];
+      } else {
+        d.base = place(*s.texture, label);
+      }
+      if (k == 0 || s.takes_coords) prog.parameters.push_back(s.parameter);
+    }
+    texram::chip::check_program(chip.drfs, {prog.drfs.front()});
+    out.materials.push_back(prog);
+  }
+  return out;
+}
+
+}  // namespace tmu::render
