@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <memory>
 
 #include "common/error.hpp"
 #include "texram/chip/chip_memory.hpp"
@@ -21,12 +22,12 @@ constexpr uint32_t kPageCells = uint32_t{1} << texram::kPageBits;
 // One DRF of a material's chain before placement.
 struct Step {
   std::string role;  // "" for the texture, else the map's role
-  const texram::TexramTexture* texture = nullptr;
+  std::shared_ptr<const texram::TexramTexture> texture;
   texram::SamplerConfig sampler;
   DrfOp op = DrfOp::kTexture;
   bool takes_coords = false;
   std::string parameter;  // what its parameter transaction carries (takes_coords or the lead)
-  std::array<const texram::TexramTexture*, 6> faces{};  // a cube map
+  std::array<std::shared_ptr<const texram::TexramTexture>, 6> faces{};  // a cube map
 };
 
 bool needs_clut(const texram::TexramTexture& t) {
@@ -52,7 +53,7 @@ std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex
   std::vector<Step> steps;
   const auto map_step = [](const std::string& role, const MapTexture& m, DrfOp op, bool takes,
                            const std::string& parameter, texram::Addressing addressing) {
-    Step s{role, m.texture.get(), m.sampler, op, takes, parameter, {}};
+    Step s{role, m.texture, m.sampler, op, takes, parameter, {}};
     s.sampler.addressing = addressing;
     return s;
   };
@@ -64,22 +65,24 @@ std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex
     steps.push_back(map_step("diffuse", maps.diffuse, DrfOp::kShading, true, "(uN, vN)",
                              texram::Addressing::kSphere));
   }
-  Step texture{
-      "", tex.texram.get(), mat.sampler, DrfOp::kTexture, !steps.empty(), "(u, v, lambda), I_d",
-      {}};
+  Step texture{"", tex.texram, mat.sampler, DrfOp::kTexture, !steps.empty(), "(u, v, lambda), I_d",
+               {}};
   steps.push_back(texture);
   if (maps.reflectance) {
     steps.push_back(map_step("reflectance", maps.reflectance, DrfOp::kReflectance, false, "",
                              texram::Addressing::kTexel));
   }
+  const uint32_t k_s = reflectance_register(mat.reflectance.constant);  // without a map
   if (maps.specular || maps.sphere) {
     steps.push_back(map_step(maps.specular ? "specular" : "environment",
                              maps.specular ? maps.specular : maps.sphere, DrfOp::kEnvironment, true,
                              "(uN, vN)", texram::Addressing::kSphere));
+    steps.back().sampler.constant_rgba = k_s;
   } else if (maps.cube[0]) {
     Step cube = map_step("environment", maps.cube[0], DrfOp::kEnvironment, true,
                          "face, (u, v) on it", texram::Addressing::kTexel);
-    for (size_t f = 0; f < 6; ++f) cube.faces[f] = maps.cube[f].texture.get();
+    for (size_t f = 0; f < 6; ++f) cube.faces[f] = maps.cube[f].texture;
+    cube.sampler.constant_rgba = k_s;
     steps.push_back(cube);
   }
   return steps;
@@ -88,7 +91,7 @@ std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex
 uint32_t cells_of(const Step& s) {
   if (!s.faces[0]) return page_up(s.texture->geometry.bank_cells());
   uint32_t n = 0;
-  for (const auto* f : s.faces) n += page_up(f->geometry.bank_cells());
+  for (const auto& f : s.faces) n += page_up(f->geometry.bank_cells());
   return n;
 }
 
@@ -180,18 +183,21 @@ ScenePrograms compile_drfs(const host::Scene& scene, const std::vector<MaterialT
       d.takes_coords = s.takes_coords;
       d.link = k + 1 < steps.size() ? prog.drfs[k + 1] : 0;
       const std::string label = mat.name + (s.role.empty() ? "" : "." + s.role);
-      const auto place = [&](const texram::TexramTexture& t, const std::string& name) {
+      const auto place = [&](const std::shared_ptr<const texram::TexramTexture>& t,
+                             const std::string& name, int face) {
         const uint32_t base = chip.used_cells;
-        chip.used_cells += page_up(t.geometry.bank_cells());
-        chip.maps.push_back({name, prog.material, prog.drfs[k], base, t.geometry.bank_cells()});
+        chip.used_cells += page_up(t->geometry.bank_cells());
+        chip.maps.push_back(
+            {name, s.role, prog.material, prog.drfs[k], face, base, t->geometry.bank_cells(), t});
         return base;
       };
       if (s.faces[0]) {
         d.cube = true;
-        for (size_t f = 0; f < 6; ++f) d.face_base[f] = place(*s.faces[f], label + kFaceNames[f]);
+        for (size_t f = 0; f < 6; ++f)
+          d.face_base[f] = place(s.faces[f], label + kFaceNames[f], static_cast<int>(f));
         d.base = d.face_base[0];
       } else {
-        d.base = place(*s.texture, label);
+        d.base = place(s.texture, label, -1);
       }
       if (k == 0 || s.takes_coords) prog.parameters.push_back(s.parameter);
     }

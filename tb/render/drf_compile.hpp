@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,10 +26,13 @@ namespace tmu::render {
 // One map in a chip's memory.
 struct ChipMap {
   std::string label;  // "floor", "shiny.environment+X"
+  std::string role;   // the map's role in the material's chain ("" the texture, "bump", ...)
   int material = 0;
-  int drf = 0;         // the DRF that reads it (1..7)
-  uint32_t base = 0;   // its first cell in every bank
-  uint32_t cells = 0;  // cells a bank (the fuller bank's)
+  int drf = 0;                                           // the DRF that reads it (1..7)
+  int face = -1;                                         // a cube map's face 0..5
+  uint32_t base = 0;                                     // its first cell in every bank
+  uint32_t cells = 0;                                    // cells a bank (the fuller bank's)
+  std::shared_ptr<const texram::TexramTexture> texture;  // what goes there
 };
 
 struct ChipProgram {

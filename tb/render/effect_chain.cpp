@@ -31,14 +31,6 @@ using glm::dvec4;
 constexpr const char* kFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
 constexpr int kCoordValueBits = 10;  // the coordinate tables' W (the RTL's)
 
-// The register k_s of eq. 6 as RGBA8888.
-uint32_t reflectance_register(const dvec3& k) {
-  const auto ch = [](double v) {
-    return static_cast<uint32_t>(formats::Channel::from_double(255.0 * v).raw());
-  };
-  return texram::rgba(ch(k.r), ch(k.g), ch(k.b), 255);
-}
-
 // Runs units one after the other and keeps each with the fragments of its outputs.
 struct Runner {
   const ChainInput& in;

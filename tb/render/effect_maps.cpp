@@ -6,6 +6,7 @@
 #include "common/error.hpp"
 #include "deflect/bump_map.hpp"
 #include "deflect/view_maps.hpp"
+#include "formats/formats.hpp"
 #include "render/texture_source.hpp"
 
 namespace tmu::render {
@@ -121,6 +122,13 @@ EffectMaps build_effect_maps(const host::Scene& scene, const host::Material& mat
     throw InputError(scene.path, field, err.what());
   }
   return e;
+}
+
+uint32_t reflectance_register(const glm::dvec3& k) {
+  const auto ch = [](double v) {
+    return static_cast<uint32_t>(formats::Channel::from_double(255.0 * v).raw());
+  };
+  return texram::rgba(ch(k.r), ch(k.g), ch(k.b), 255);
 }
 
 }  // namespace tmu::render

@@ -41,6 +41,9 @@ struct EffectMaps {
 // space): v_dir from the target to the eye, v_side = up x v_dir normalised, v_up = v_dir x v_side.
 deflect::ViewFrame camera_view_frame(const host::Camera& camera);
 
+// The register k_s of eq. 6 (R without a reflectance map) as RGBA8888.
+uint32_t reflectance_register(const glm::dvec3& k);
+
 // Throws InputError (scene file, the material's field, reason) for an unreadable image.
 EffectMaps build_effect_maps(const host::Scene& scene, const host::Material& material);
 

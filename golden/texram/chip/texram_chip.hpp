@@ -1,0 +1,85 @@
+// Golden model of the TEXRAM chip's sequencer (000 §14; docs/texram_chip.md): a pixel enters
+// with the number of its leading DRF and its first parameter; the chip samples the DRF's map in
+// the shared memory with the trilinear datapath (texram/trilinear.hpp: the same plan, taps,
+// blend and eq. 5, the map's cells at base + its layout's address), does what the DRF's op says
+// with the sample, and follows the link, taking the pixel's next parameter first where the DRF
+// asks for new coordinates, until a link is 0. Every access goes through one page model.
+//
+// Per pixel, registers: I_d (the parameter's shade, or a shading map's sample), C_d (the
+// texture's eq. 5), R (a reflectance map's sample; else the environment DRF's constant k_s),
+// E (the environment's sample). The pixel's colour is C_d, or min(255, C_d + R E / 255) per
+// channel (eq. 6-7, texram/specular_combine.hpp) once an environment was sampled. An emit DRF's
+// sample leaves the chip at once (not last); the colour leaves last. After kMaxSteps accesses
+// the pixel ends where it is and the sticky step_limit flag is set (the host never programs
+// such a chain; check_program refuses it).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "texram/chip/chip_memory.hpp"
+#include "texram/chip/drf.hpp"
+#include "texram/page_model.hpp"
+#include "texram/sampler_config.hpp"
+#include "texram/texture.hpp"
+
+namespace tmu::texram::chip {
+
+// One parameter transaction of a pixel: the first names the leading DRF.
+struct PixelParameter {
+  int lead = 1;     // DrfIndex, read from a pixel's first parameter only
+  Request request;  // u, v (or uN, vN), lambda, shade I_d
+  int face = 0;     // CubeFace, for DRF 7's cube map
+};
+
+struct ChipOutput {
+  uint32_t rgba = 0;  // Rgba8888
+  bool last = false;  // the pixel's colour; false: an emit DRF's sample
+  friend bool operator==(const ChipOutput&, const ChipOutput&) = default;
+};
+
+// One access of the shared memory: the cell read in each bank (nothing where empty).
+struct ChipAccess {
+  std::array<std::optional<uint32_t>, 8> address{};
+  int drf = 0;
+  friend bool operator==(const ChipAccess&, const ChipAccess&) = default;
+};
+
+struct ChipStats {
+  uint64_t pixels = 0, parameters = 0, steps = 0;  // steps: DRF visits (map samples)
+  PageStats pages;
+  bool step_limit = false;  // sticky: a pixel ran into kMaxSteps
+};
+
+class TexramChip {
+ public:
+  // `memory` holds the maps (place() them first), `clut` the chip's palette.
+  TexramChip(const ChipMemory& memory, const Clut32& clut) : memory_(memory), clut_(clut) {}
+
+  void write(const DrfWrite& w) { apply(drfs_, w); }
+  const DrfFile& drfs() const { return drfs_; }
+
+  // Runs one pixel: takes its parameters from `params` starting at `next` (advanced past the
+  // ones it takes) and appends its outputs. Throws std::logic_error when the chain needs a
+  // parameter the list does not have.
+  void pixel(const std::vector<PixelParameter>& params, size_t& next, std::vector<ChipOutput>& out);
+
+  const ChipStats& stats() const { return stats_; }
+  const std::vector<ChipAccess>& accesses() const { return accesses_; }
+
+ private:
+  // The DRF's map sampled at `request`: the datapath's colour before the pixel's combines.
+  uint32_t sample(int number, const Drf& d, const PixelParameter& p, uint32_t shade);
+
+  const ChipMemory& memory_;
+  const Clut32& clut_;
+  DrfFile drfs_{};
+  PageModel pages_;
+  ChipStats stats_;
+  std::vector<ChipAccess> accesses_;
+};
+
+// The planes (accesses per sample) and the block grid a DRF's kind implies.
+Geometry drf_geometry(const Drf& d);
+
+}  // namespace tmu::texram::chip

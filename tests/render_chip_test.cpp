@@ -1,0 +1,145 @@
+// The TEXRAM chip's golden sequencer (golden/texram/chip/texram_chip.hpp) against today's chains
+// of separate units: every bundled scene compiled to DRF programs (render/drf_compile.hpp), its
+// maps placed in each chip's one memory, the DRFs loaded through the write port, and each
+// fragment of a material the chip samples run through its chain with the parameters the chain's
+// units were given (the texture's (u, v, lambda) and I_d, a bump map's (u, v), the (uN, vN) or
+// cube face the deflection units computed): the chip's colour equals the chain's, and an emit
+// DRF's sample equals the bump unit's texel, for every fragment.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "blocks/trilinear/trilinear_block.hpp"
+#include "render/drf_compile.hpp"
+#include "texram/chip/texram_chip.hpp"
+
+namespace tmu::render {
+namespace {
+
+namespace fs = std::filesystem;
+using texram::chip::ChipOutput;
+using texram::chip::PixelParameter;
+
+// The requests each trilinear unit of a material was given, by role and fragment; cube faces
+// by fragment.
+struct UnitRequests {
+  std::map<std::string, std::map<size_t, texram::Request>> by_role;
+  std::map<size_t, int> face;
+  std::map<size_t, uint32_t> bump_texel;
+};
+
+UnitRequests requests_of(const Pipeline& pipe, const std::string& material) {
+  static const std::string kEnv = "environment";
+  const auto& table = tb::desc::trilinear::table();
+  const int req = table.channel_index("req");
+  UnitRequests out;
+  for (size_t u = 0; u < pipe.units().size(); ++u) {
+    const UnitRun& run = pipe.units()[u];
+    if (run.material != material || run.kind != "trilinear") continue;
+    std::string role = run.role;
+    int face = -1;
+    if (role.size() == kEnv.size() + 2 && role.compare(0, kEnv.size(), kEnv) == 0) {
+      static const std::vector<std::string> kFaces = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+      face = static_cast<int>(std::find(kFaces.begin(), kFaces.end(), role.substr(kEnv.size())) -
+                              kFaces.begin());
+      role = kEnv;
+    }
+    const std::vector<size_t>& frags = pipe.fragments_of_outputs()[u];
+    size_t i = 0;
+    for (const tb::Txn& t : run.items) {
+      if (table.channel_of(t) != req) continue;
+      const size_t f = frags.at(i);
+      out.by_role[role][f] = tb::trilinear_request(t);
+      if (face >= 0) out.face[f] = face;
+      if (role == "bump") out.bump_texel[f] = static_cast<uint32_t>(run.result.outputs.at(i).f[0]);
+      ++i;
+    }
+  }
+  return out;
+}
+
+// Runs every chip-sampled material of `scene` through the chip; returns the fragments checked.
+size_t check_scene(const host::Scene& scene) {
+  Pipeline pipe(scene, Level::kGolden);
+  const std::vector<host::Fragment> frags = front_end(scene, pipe, 0, -1, nullptr);
+  std::vector<host::FragmentRecord> records;
+  for (const host::Fragment& f : frags) records.push_back(host::quantize(f));
+  const std::vector<uint32_t> rgba = pipe.shade(records, &frags, nullptr);
+  const ScenePrograms programs = compile_drfs(scene, pipe.textures(), 4);
+
+  size_t checked = 0;
+  for (size_t c = 0; c < programs.chips.size(); ++c) {
+    const ChipProgram& prog = programs.chips[c];
+    if (prog.maps.empty()) continue;
+    texram::chip::ChipMemory memory;
+    for (const ChipMap& m : prog.maps) memory.place(*m.texture, m.base);
+    const texram::Clut32 clut = prog.clut.value_or(texram::Clut32{});
+    texram::chip::TexramChip chip(memory, clut);
+    for (int n = 1; n <= texram::chip::kDrfs; ++n) {
+      for (const auto& w : texram::chip::drf_writes(n, prog.drfs[static_cast<size_t>(n - 1)]))
+        chip.write(w);
+    }
+    EXPECT_EQ(chip.drfs(), prog.drfs);
+    for (const MaterialProgram& mp : programs.materials) {
+      const host::Material& mat = scene.materials[static_cast<size_t>(mp.material)];
+      // The chip has no footprint marcher or tau unit yet; orders texture and composed sample
+      // at the vertices.
+      if (mp.chip != static_cast<int>(c) || mat.footprint || mat.tau || samples_at_vertices(mat))
+        continue;
+      SCOPED_TRACE(mat.name);
+      const UnitRequests units = requests_of(pipe, mat.name);
+      std::map<int, std::string> role_of;  // DRF -> role
+      for (const ChipMap& m : prog.maps) {
+        if (m.material == mp.material) role_of[m.drf] = m.role;
+      }
+      for (size_t f = 0; f < records.size(); ++f) {
+        if (records[f].material != mp.material) continue;
+        std::vector<PixelParameter> params;
+        for (size_t k = 0; k < mp.drfs.size(); ++k) {
+          const int n = mp.drfs[k];
+          if (k > 0 && !prog.drfs[static_cast<size_t>(n - 1)].takes_coords) continue;
+          const std::string& role = role_of.at(n);
+          PixelParameter p;
+          p.lead = mp.drfs.front();
+          p.request = units.by_role.at(role).at(f);
+          if (const auto face = units.face.find(f); face != units.face.end()) p.face = face->second;
+          params.push_back(p);
+        }
+        size_t next = 0;
+        std::vector<ChipOutput> out;
+        chip.pixel(params, next, out);
+        EXPECT_EQ(next, params.size()) << "fragment " << f;
+        const auto bump = units.bump_texel.find(f);
+        const size_t outputs = bump != units.bump_texel.end() ? 2 : 1;
+        if (out.size() != outputs) {
+          ADD_FAILURE() << "fragment " << f << ": " << out.size() << " outputs, " << outputs
+                        << " expected";
+          return checked;
+        }
+        EXPECT_EQ(out.back(), (ChipOutput{rgba[f], true})) << "fragment " << f;
+        if (outputs == 2) EXPECT_EQ(out[0], (ChipOutput{bump->second, false})) << "fragment " << f;
+        ++checked;
+      }
+    }
+    EXPECT_FALSE(chip.stats().step_limit);
+  }
+  return checked;
+}
+
+TEST(RenderChipTest, EveryBundledChainGivesTheSameColoursOnTheChip) {
+  for (const auto& entry : fs::directory_iterator(std::string(TMU_SOURCE_DIR) + "/scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    std::ifstream in(entry.path());
+    if (nlohmann::json::parse(in).contains("flyover")) continue;  // a clip-map fly-over (003)
+    SCOPED_TRACE(entry.path().filename().string());
+    const size_t checked = check_scene(host::load_scene(entry.path().string()));
+    std::cout << entry.path().filename().string() << ": " << checked
+              << " fragments through the chip\n";
+  }
+}
+
+}  // namespace
+}  // namespace tmu::render
