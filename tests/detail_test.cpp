@@ -16,6 +16,7 @@
 
 #include "common/test_patterns.hpp"
 #include "footprint/footprint.hpp"
+#include "tests/error_stats.hpp"
 #include "texram/detail_ideal.hpp"
 #include "texram/page_model.hpp"
 
@@ -104,30 +105,7 @@ std::vector<DetailMapId> maps_of(const std::vector<DetailAccess>& accesses) {
   return ids;
 }
 
-// Per-channel errors, in 8-bit levels.
-struct ErrorStats {
-  std::vector<double> errors;
-  void add(double e) { errors.push_back(e); }
-  double max() const {
-    return errors.empty() ? 0 : *std::max_element(errors.begin(), errors.end());
-  }
-  double mean() const {
-    return errors.empty() ? 0
-                          : std::accumulate(errors.begin(), errors.end(), 0.0) /
-                                static_cast<double>(errors.size());
-  }
-  double share_above(double bound) const {
-    const auto n = std::count_if(errors.begin(), errors.end(), [&](double e) { return e > bound; });
-    return errors.empty() ? 0 : static_cast<double>(n) / static_cast<double>(errors.size());
-  }
-  double percentile(double p) const {
-    if (errors.empty()) return 0;
-    std::vector<double> v = errors;
-    const auto k = static_cast<size_t>(p * static_cast<double>(v.size() - 1));
-    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-    return v[k];
-  }
-};
+using test::ErrorStats;
 
 // --- lambda >= 0: the trilinear unit -------------------------------------------------------
 
@@ -221,7 +199,7 @@ TEST(DetailTest, GoldenIsWithinItsBoundOfTheIdealForEachCombine) {
                 const double bound = (modulate ? 3.5 : 1.5) + (eq5 == Combine::kOne ? 0 : 0.5);
                 EXPECT_LE(e.max(), bound) << name(tk) << " detail " << name(dk) << " " << dw << "x"
                                           << dh << " " << name(b) << " " << name(f);
-                all.errors.insert(all.errors.end(), e.errors.begin(), e.errors.end());
+                all.add(e);
                 if (eq5 == Combine::kOne) one_max = std::max(one_max, e.max());
               }
             }
