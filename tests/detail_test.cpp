@@ -592,6 +592,58 @@ TEST(DetailTest, ZeroFullAndNeutralTexels) {
   }
 }
 
+// Every width setting (S, W, L each 1..8): the weights of each blend sum to one, so a detail
+// map of the texture's own constant colour gives that colour at every lambda under replace, and
+// a detail of 128 gives the texture's colour under modulate. And the weight of the texture's
+// level 0 between -1 and 0, seen through a black detail map under a white texture (replace:
+// C = 255 wt / 2^W rounded half up), is lambda + 1 floored to L bits, then floored to W bits:
+// wt = floor(floor((lambda + 1) 2^L) 2^W / 2^L).
+TEST(DetailTest, EveryWidthSettingBlendsByTheStatedWeights) {
+  const auto flat = [](int w, int h, Rgb8 c) {
+    ImageRgb8 img(w, h);
+    std::fill(img.pixels.begin(), img.pixels.end(), c);
+    return img;
+  };
+  std::mt19937 rng(11);
+  const Level8 ou = random_offsets(8, 8, 1, rng), ov = random_offsets(8, 8, 1, rng);
+  const Rgb8 colour{255, 0, 77};
+  const Scene same = make_scene(import_image(flat(8, 8, colour), TexelKind::kTrueColour),
+                                import_image(flat(32, 32, colour), TexelKind::kTrueColour), ou, ov);
+  const Scene grey =
+      make_scene(import_image(flat(8, 8, colour), TexelKind::kTrueColour),
+                 import_image(flat(32, 32, {128, 128, 128}), TexelKind::kLuminance), ou, ov);
+  const Scene black_on_white =
+      make_scene(import_image(flat(8, 8, {255, 255, 255}), TexelKind::kLuminance),
+                 import_image(flat(32, 32, {0, 0, 0}), TexelKind::kLuminance), ou, ov);
+  for (int sb = 1; sb <= 8; ++sb) {
+    for (int w = 1; w <= 8; ++w) {
+      for (int l : {1, 3, 8}) {
+        SamplerConfig c = config(TexelKind::kTrueColour);
+        c.widths = {sb, w, l};
+        for (int i = 0; i < 50; ++i) {
+          const Request r{static_cast<int32_t>(rng() % 100000) - 50000,
+                          static_cast<int32_t>(rng() % 9999),
+                          -static_cast<int32_t>(rng() % (6 * kOne)) - 1, 0};
+          ASSERT_EQ(sample_detail(same.texture, c, &same.map, {DetailCombine::kReplace}, r),
+                    rgba(255, 0, 77, 255))
+              << "S" << sb << " W" << w << " L" << l << " lambda " << r.lambda;
+          ASSERT_EQ(sample_detail(grey.texture, c, &grey.map, {DetailCombine::kModulate}, r),
+                    rgba(255, 0, 77, 255))
+              << "S" << sb << " W" << w << " L" << l << " lambda " << r.lambda;
+        }
+        for (int32_t lambda = -kOne; lambda < 0; ++lambda) {
+          const auto f_l = static_cast<int64_t>(std::floor((lambda + kOne) / 256.0 * (1 << l)));
+          const auto wt = static_cast<int64_t>(std::floor(double(f_l) * (1 << w) / (1 << l)));
+          const int64_t want = (255 * wt + (int64_t{1} << (w - 1))) >> w;
+          const uint32_t got = sample_detail(black_on_white.texture, c, &black_on_white.map,
+                                             {DetailCombine::kReplace}, {5000, 3000, lambda, 0});
+          ASSERT_EQ(channel(got, 0), want) << "W" << w << " L" << l << " lambda " << lambda;
+        }
+      }
+    }
+  }
+}
+
 // The footprint marcher sends negative lambdas when a pixel's footprint is smaller than a texel:
 // log2 of 0.1 texel per pixel is about -3.3, and a point (both derivatives zero) the port's
 // smallest, -32. The detail sample takes both: -32 is -4, and -3.3 is within the bound of the
