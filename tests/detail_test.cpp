@@ -171,8 +171,8 @@ TEST(DetailTest, GoldenIsWithinItsBoundOfTheIdealForEachCombine) {
     const bool modulate = m == DetailCombine::kModulate;
     ErrorStats all;
     double one_max = 0;  // without eq. 5
-    for (TexelKind tk : {TexelKind::kLuminance, TexelKind::kTrueColour}) {
-      for (TexelKind dk : {TexelKind::kLuminance, TexelKind::kTrueColour}) {
+    for (TexelKind tk : {TexelKind::kLuminance, TexelKind::kTrueColour, TexelKind::kIndex}) {
+      for (TexelKind dk : {TexelKind::kLuminance, TexelKind::kTrueColour, TexelKind::kSingle}) {
         for (auto [dw, dh] : {std::pair{256, 256}, std::pair{32, 16}}) {
           const ImageRgb8 detail_image =
               modulate ? grey_detail(dw, dh, 5) : patterns::noise(dw, dh, 5);
@@ -212,7 +212,7 @@ TEST(DetailTest, GoldenIsWithinItsBoundOfTheIdealForEachCombine) {
               << " channel values, 99.9th percentile " << all.percentile(0.999) << ", max "
               << all.max() << ", mean " << all.mean() << ", above 1: " << 100 * all.share_above(1.0)
               << " %; max without eq. 5 " << one_max << "\n";
-    // Measured (99.9th percentile / max, eq. 5 included): 0.98 / 1.62 (replace), 1.33 / 1.97
+    // Measured (99.9th percentile / max, eq. 5 included): 0.97 / 1.65 (replace), 1.31 / 2.17
     // (modulate). The percentile is asserted with about half a level of margin, the size of one
     // rounding.
     EXPECT_LE(all.percentile(0.999), modulate ? 1.8 : 1.5);
