@@ -4,8 +4,8 @@
 // (source_texels.hpp, through the ideal trilinear unit of trilinear_ideal.hpp, which builds its
 // own exact box pyramid) and the offset maps as given. It shares with golden only definitions
 // (detail_definition.hpp, sampler_config.hpp, the containers); tests/detail_test.cpp measures
-// golden against it and checks it against a reference of its own (the regions pasted into one
-// texture 16 times larger).
+// golden against it, and tests/detail_reference_test.cpp checks it against a reference of its
+// own (the regions pasted into one texture 16 times larger).
 #pragma once
 
 #include <array>
