@@ -124,7 +124,23 @@ Level8 region_means(const Level8& detail, const Level8& ou, const Level8& ov) {
 struct ReferenceFigures {
   int inside = 0, edge = 0;
   double max_inside = 0, max_edge = 0, mean_edge = 0, max_edge_share = 0, mean_all = 0;
+  double max_excess = 0;  // over all samples, |diff| beyond the texture's rounding of the means
 };
+
+// A noise detail map of 256 x 256 (independent texels: the worst case for any edge rule) and
+// random offsets for an 8 x 8 texture, multiples of `step`.
+struct Case {
+  Level8 detail, ou, ov;
+};
+Case random_case(uint32_t step, uint32_t seed) {
+  std::mt19937 rng(seed);
+  const ImageRgb8 noise = patterns::noise(256, 256, seed);
+  Level8 ou = random_offsets(8, 8, step, rng), ov = random_offsets(8, 8, step, rng);
+  return {plane_of(noise, [](Rgb8 p) { return p.g; }), std::move(ou), std::move(ov)};
+}
+
+ReferenceFigures ideal_against_reference(const Case& c, double lambda_lo, double lambda_hi,
+                                         uint32_t seed);
 
 // Replace, luminance, wrap: the ideal against the pasted reference on random (u, v) and lambda in
 // [-4.5, 0). A tap that reads the sample's own region reads the same texel in both when the
@@ -132,12 +148,9 @@ struct ReferenceFigures {
 // reads the detail map's next texels in the ideal and the neighbouring texel's region in the
 // reference. So, per sample, |ideal - reference| <= 255 x (the weight of the taps beyond the
 // region) + 0.5 x (the weight of level 4, the texture's rounded means against the exact ones).
-ReferenceFigures ideal_against_reference(uint32_t step, double lambda_lo, double lambda_hi,
-                                         uint32_t seed) {
+ReferenceFigures ideal_against_reference(const Level8& detail, const Level8& ou, const Level8& ov,
+                                         double lambda_lo, double lambda_hi, uint32_t seed) {
   std::mt19937 rng(seed);
-  const ImageRgb8 noise = patterns::noise(256, 256, seed);
-  const Level8 detail = plane_of(noise, [](Rgb8 p) { return p.g; });
-  const Level8 ou = random_offsets(8, 8, step, rng), ov = random_offsets(8, 8, step, rng);
   const Level8 texture = region_means(detail, ou, ov);
   const Scene s = make_scene(grey_texture(texture), grey_texture(detail), ou, ov);
   const Pasted reference(detail, ou, ov);
@@ -161,6 +174,7 @@ ReferenceFigures ideal_against_reference(uint32_t step, double lambda_lo, double
       }
     }
     const double diff = std::abs(got - want);
+    fig.max_excess = std::max(fig.max_excess, diff - 0.5 * level4);
     if (beyond == 0) {
       ++fig.inside;
       fig.max_inside = std::max(fig.max_inside, diff - 0.5 * level4);
@@ -176,9 +190,14 @@ ReferenceFigures ideal_against_reference(uint32_t step, double lambda_lo, double
   return fig;
 }
 
+ReferenceFigures ideal_against_reference(const Case& c, double lambda_lo, double lambda_hi,
+                                         uint32_t seed) {
+  return ideal_against_reference(c.detail, c.ou, c.ov, lambda_lo, lambda_hi, seed);
+}
+
 TEST(DetailTest, IdealIsThePastedRegionsReferenceAwayFromRegionEdges) {
   // Regions aligned to 16 (offsets multiples of 16): every level's texels agree.
-  const ReferenceFigures f = ideal_against_reference(kSide, -4.5, 0.0, 21);
+  const ReferenceFigures f = ideal_against_reference(random_case(kSide, 21), -4.5, 0.0, 31);
   std::cout << "aligned regions, lambda in [-4.5, 0): " << f.inside
             << " samples inside, max |diff| " << f.max_inside << " (beyond 0.5 x level-4 weight); "
             << f.edge << " at region edges: max |diff| " << f.max_edge << ", mean " << f.mean_edge
@@ -196,15 +215,33 @@ TEST(DetailTest, IdealIsThePastedRegionsReferenceAwayFromRegionEdges) {
 // whole texels of the map's own pyramid, and the two differ inside the region too (measured,
 // docs/detail.md "Region edges").
 TEST(DetailTest, UnalignedRegionsAgreeOnlyAtLevelMinusFour) {
-  const ReferenceFigures at_minus4 = ideal_against_reference(1, -6.0, -4.0, 22);
+  const ReferenceFigures at_minus4 = ideal_against_reference(random_case(1, 22), -6.0, -4.0, 32);
   EXPECT_LE(at_minus4.max_inside, 1e-9);
   EXPECT_LE(at_minus4.max_edge_share, 1.0 + 1e-9);
-  const ReferenceFigures above = ideal_against_reference(1, -4.0, 0.0, 23);
+  const ReferenceFigures above = ideal_against_reference(random_case(1, 23), -4.0, 0.0, 33);
   std::cout << "unaligned regions, lambda in [-4, 0): inside max |diff| " << above.max_inside
             << "; at edges max " << above.max_edge << ", mean " << above.mean_edge << "\n";
   std::cout << "unaligned regions, lambda in [-6, -4]: inside max |diff| " << at_minus4.max_inside
             << "; at edges max " << at_minus4.max_edge << ", mean " << at_minus4.mean_edge << "\n";
   EXPECT_GT(above.max_inside, 1.0);  // the misalignment shows
+}
+
+// Regions side by side: texel (x, y) points at (16 x, 16 y) of a 128 x 128 detail map, so each
+// texel's neighbour's region follows its own in the map and the map's wrap is the texture's.
+// Then the two readings are one: equal everywhere, at the edges too (docs/detail.md "Region
+// edges: why the map's neighbours").
+TEST(DetailTest, SideBySideRegionsMakeBothEdgeReadingsEqual) {
+  const ImageRgb8 noise = patterns::noise(128, 128, 24);
+  Case c{plane_of(noise, [](Rgb8 p) { return p.g; }), Level8(8, 8), Level8(8, 8)};
+  for (uint32_t y = 0; y < 8; ++y) {
+    for (uint32_t x = 0; x < 8; ++x) {
+      c.ou.at(x, y) = static_cast<uint8_t>(kSide * x);
+      c.ov.at(x, y) = static_cast<uint8_t>(kSide * y);
+    }
+  }
+  const ReferenceFigures f = ideal_against_reference(c, -4.5, 0.0, 34);
+  EXPECT_GT(f.edge, 10000);
+  EXPECT_LE(f.max_excess, 1e-9) << "at " << f.edge << " edge samples";
 }
 
 }  // namespace
