@@ -110,6 +110,16 @@ package tmu_pkg;
   localparam int unsigned TexCombineFrac = 0;
   typedef logic [TexCombineW-1:0] tex_combine_t;
 
+  // DetailOffset: UQ8.0, detail map (000 §9): a detail offset map's entry, the first column (row) of a texel's 16 x 16 region in the detail map's level-0 texels (lambda = -4), 0..255
+  localparam int unsigned DetailOffsetW = 8;
+  localparam int unsigned DetailOffsetFrac = 0;
+  typedef logic [DetailOffsetW-1:0] detail_offset_t;
+
+  // TexDetailCombine: UQ1.0, detail map: 0 replace (the detail levels continue the pyramid), 1 modulate (RGB = min(255, T D / 128), A = T's)
+  localparam int unsigned TexDetailCombineW = 1;
+  localparam int unsigned TexDetailCombineFrac = 0;
+  typedef logic [TexDetailCombineW-1:0] tex_detail_combine_t;
+
   // TexAddressing: UQ1.0, TEXRAM request coordinates: 0 texels (TexCoord), 1 a sphere map's uN, vN (UnitComp)
   localparam int unsigned TexAddressingW = 1;
   localparam int unsigned TexAddressingFrac = 0;
@@ -398,6 +408,15 @@ package tmu_pkg;
 
   // byte planes of a texel (true colour R G B A) or of a CCC block word
   localparam int unsigned Planes = 4;
+
+  // detail map: a level-0 texel's region is 16 x 16 texels of level -4
+  localparam int unsigned DetailRegionSide = 16;
+
+  // detail map: the levels below level 0, lambda = -1 .. -4
+  localparam int unsigned DetailLevels = 4;
+
+  // detail map: the largest side is 2^8 = 256 texels (8-bit offsets)
+  localparam int unsigned MaxDetailLog2 = 8;
 
   // tau unit: the most grid cells along s or t (17 x 17 nodes)
   localparam int unsigned TauMaxCells = 16;

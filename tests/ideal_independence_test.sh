@@ -26,6 +26,7 @@ definitions=(
   texram/level8.hpp                   # the mipmap level container (8-bit texels)
   texram/source_texels.hpp            # what a texture was made from: planes, CLUT, flags
   texram/sampler_config.hpp           # the sampler's enums and registers, RGBA8888 packing
+  texram/detail_definition.hpp        # the detail map's combine rules and shape (16 x 16 regions, 4 levels)
   footprint/q_rule.hpp                # which measure of the footprint's width q
   tau/tau_definition.hpp              # the tau grid's shape, the interpolations' names, the extrapolation rule
 )

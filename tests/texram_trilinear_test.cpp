@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/test_patterns.hpp"
+#include "tests/error_stats.hpp"
 #include "texram/trilinear.hpp"
 #include "texram/trilinear_ideal.hpp"
 
@@ -261,31 +262,7 @@ TEST(TexramTrilinearTest, CombineSelectsOneConstantOrShade) {
 
 // --- error against the ideal model ---------------------------------------------------------
 
-// Per-channel errors, in 8-bit levels.
-struct ErrorStats {
-  std::vector<double> errors;
-  void add(double e) { errors.push_back(e); }
-  void add(const ErrorStats& o) { errors.insert(errors.end(), o.errors.begin(), o.errors.end()); }
-  double max() const {
-    return errors.empty() ? 0 : *std::max_element(errors.begin(), errors.end());
-  }
-  double mean() const {
-    return errors.empty()
-               ? 0
-               : std::accumulate(errors.begin(), errors.end(), 0.0) / double(errors.size());
-  }
-  double share_above(double bound) const {
-    const auto n = std::count_if(errors.begin(), errors.end(), [&](double e) { return e > bound; });
-    return errors.empty() ? 0 : double(n) / double(errors.size());
-  }
-  double percentile(double p) const {  // p in [0, 1]
-    if (errors.empty()) return 0;
-    std::vector<double> v = errors;
-    const auto k = static_cast<size_t>(p * double(v.size() - 1));
-    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-    return v[k];
-  }
-};
+using test::ErrorStats;
 
 // Requests on the port grid (SQ16.8, SQ6.8), a texture wide on either side and lambda below 0
 // and above the top, so the only differences are the unit's internal widths, its pyramid and
