@@ -3,8 +3,9 @@
 // 1. Per tessellation threshold (claims 8-11: MC, DC, TC, combined): a scene (default
 //    scenes/nurbs_freeform.json) with every NURBS object tessellated by the row and every
 //    material with a tau in order tc (claim 16: (u, v) from tau at the vertices, interpolated
-//    over the triangles, so the threshold moves both the geometry and the texture): triangles,
-//    front-end time, the units' cycles, and the frame's error against the reference.
+//    over the triangles, so the threshold moves both the geometry and the texture), sampled by
+//    the trilinear unit at the pixel's lambda (sweep_nurbs.cpp per_pixel_isotropic: why):
+//    triangles, front-end time, the units' cycles, and the frame's error against the reference.
 // 2. Per tau grid size and interpolation (claims 4-6): the tau unit's error against the
 //    functional map, and its rtl against golden (sweep_nurbs_tau.hpp).
 // 3. Per composition order (claims 15-18: pc, tc, texture, composed) on one sphere of
