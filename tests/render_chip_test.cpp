@@ -5,6 +5,7 @@
 // units were given (the texture's (u, v, lambda) and I_d, a bump map's (u, v), the (uN, vN) or
 // cube face the deflection units computed): the chip's colour equals the chain's, and an emit
 // DRF's sample equals the bump unit's texel, for every fragment.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -61,6 +62,20 @@ UnitRequests requests_of(const Pipeline& pipe, const std::string& material) {
   return out;
 }
 
+// The page model's time per pixel (000 §5: 30 ns an access, a page fault 30 ns more), for the
+// reader: what the chain costs on one chip, beside the patent's figures (docs/texram_chip.md).
+void print_timing(const std::string& material, size_t maps, const texram::chip::ChipStats& s) {
+  if (s.pixels == 0) return;
+  const double ns = static_cast<double>(s.pages.accesses + s.pages.slow_accesses) *
+                    texram::kAccessNs / static_cast<double>(s.pixels);
+  fmt::print(
+      "  {}: {} map{}, {} pixels, {:.2f} accesses and {:.2f} page-faulting accesses a "
+      "pixel: {:.0f} ns a pixel, {:.1f} M pixels/s\n",
+      material, maps, maps == 1 ? "" : "s", s.pixels,
+      static_cast<double>(s.pages.accesses) / static_cast<double>(s.pixels),
+      static_cast<double>(s.pages.slow_accesses) / static_cast<double>(s.pixels), ns, 1e3 / ns);
+}
+
 // Runs every chip-sampled material of `scene` through the chip; returns the fragments checked.
 size_t check_scene(const host::Scene& scene) {
   Pipeline pipe(scene, Level::kGolden);
@@ -77,12 +92,6 @@ size_t check_scene(const host::Scene& scene) {
     texram::chip::ChipMemory memory;
     for (const ChipMap& m : prog.maps) memory.place(*m.texture, m.base);
     const texram::Clut32 clut = prog.clut.value_or(texram::Clut32{});
-    texram::chip::TexramChip chip(memory, clut);
-    for (int n = 1; n <= texram::chip::kDrfs; ++n) {
-      for (const auto& w : texram::chip::drf_writes(n, prog.drfs[static_cast<size_t>(n - 1)]))
-        chip.write(w);
-    }
-    EXPECT_EQ(chip.drfs(), prog.drfs);
     for (const MaterialProgram& mp : programs.materials) {
       const host::Material& mat = scene.materials[static_cast<size_t>(mp.material)];
       // The chip has no footprint marcher or tau unit yet; orders texture and composed sample
@@ -90,6 +99,13 @@ size_t check_scene(const host::Scene& scene) {
       if (mp.chip != static_cast<int>(c) || mat.footprint || mat.tau || samples_at_vertices(mat))
         continue;
       SCOPED_TRACE(mat.name);
+      // A chip per material, so that its page model counts this material's pixels alone.
+      texram::chip::TexramChip chip(memory, clut);
+      for (int n = 1; n <= texram::chip::kDrfs; ++n) {
+        for (const auto& w : texram::chip::drf_writes(n, prog.drfs[static_cast<size_t>(n - 1)]))
+          chip.write(w);
+      }
+      EXPECT_EQ(chip.drfs(), prog.drfs);
       const UnitRequests units = requests_of(pipe, mat.name);
       std::map<int, std::string> role_of;  // DRF -> role
       for (const ChipMap& m : prog.maps) {
@@ -123,8 +139,9 @@ size_t check_scene(const host::Scene& scene) {
         if (outputs == 2) EXPECT_EQ(out[0], (ChipOutput{bump->second, false})) << "fragment " << f;
         ++checked;
       }
+      EXPECT_FALSE(chip.stats().step_limit);
+      print_timing(mat.name, mp.drfs.size(), chip.stats());
     }
-    EXPECT_FALSE(chip.stats().step_limit);
   }
   return checked;
 }
@@ -135,9 +152,9 @@ TEST(RenderChipTest, EveryBundledChainGivesTheSameColoursOnTheChip) {
     std::ifstream in(entry.path());
     if (nlohmann::json::parse(in).contains("flyover")) continue;  // a clip-map fly-over (003)
     SCOPED_TRACE(entry.path().filename().string());
+    std::cout << entry.path().filename().string() << ":\n";
     const size_t checked = check_scene(host::load_scene(entry.path().string()));
-    std::cout << entry.path().filename().string() << ": " << checked
-              << " fragments through the chip\n";
+    std::cout << "  " << checked << " fragments through the chip\n";
   }
 }
 

@@ -47,8 +47,8 @@ struct ChipAccess {
 
 struct ChipStats {
   uint64_t pixels = 0, parameters = 0, steps = 0;  // steps: DRF visits (map samples)
-  PageStats pages;
-  bool step_limit = false;  // sticky: a pixel ran into kMaxSteps
+  PageStats pages;                                 // the shared memory's page model
+  bool step_limit = false;                         // sticky: a pixel ran into kMaxSteps
 };
 
 class TexramChip {
@@ -64,7 +64,11 @@ class TexramChip {
   // parameter the list does not have.
   void pixel(const std::vector<PixelParameter>& params, size_t& next, std::vector<ChipOutput>& out);
 
-  const ChipStats& stats() const { return stats_; }
+  ChipStats stats() const {
+    ChipStats s = stats_;
+    s.pages = pages_.stats();
+    return s;
+  }
   const std::vector<ChipAccess>& accesses() const { return accesses_; }
 
  private:
