@@ -13,6 +13,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "blocks/footprint/footprint_block.hpp"
 #include "blocks/trilinear/trilinear_block.hpp"
 #include "render/drf_compile.hpp"
 #include "texram/chip/texram_chip.hpp"
@@ -27,7 +28,7 @@ using texram::chip::PixelParameter;
 // The requests each trilinear unit of a material was given, by role and fragment; cube faces
 // by fragment.
 struct UnitRequests {
-  std::map<std::string, std::map<size_t, texram::Request>> by_role;
+  std::map<std::string, std::map<size_t, PixelParameter>> by_role;
   std::map<size_t, int> face;
   std::map<size_t, uint32_t> bump_texel;
 };
@@ -35,11 +36,14 @@ struct UnitRequests {
 UnitRequests requests_of(const Pipeline& pipe, const std::string& material) {
   static const std::string kEnv = "environment";
   const auto& table = tb::desc::trilinear::table();
+  const auto& footprint_table = tb::desc::footprint::table();
   const int req = table.channel_index("req");
+  const int footprint_req = footprint_table.channel_index("req");
   UnitRequests out;
   for (size_t u = 0; u < pipe.units().size(); ++u) {
     const UnitRun& run = pipe.units()[u];
-    if (run.material != material || run.kind != "trilinear") continue;
+    if (run.material != material || (run.kind != "trilinear" && run.kind != "footprint")) continue;
+    const bool marcher = run.kind == "footprint";
     std::string role = run.role;
     int face = -1;
     if (role.size() == kEnv.size() + 2 && role.compare(0, kEnv.size(), kEnv) == 0) {
@@ -51,9 +55,20 @@ UnitRequests requests_of(const Pipeline& pipe, const std::string& material) {
     const std::vector<size_t>& frags = pipe.fragments_of_outputs()[u];
     size_t i = 0;
     for (const tb::Txn& t : run.items) {
-      if (table.channel_of(t) != req) continue;
+      if (marcher ? footprint_table.channel_of(t) != footprint_req : table.channel_of(t) != req)
+        continue;
       const size_t f = frags.at(i);
-      out.by_role[role][f] = tb::trilinear_request(t);
+      PixelParameter& p = out.by_role[role][f];
+      if (marcher) {
+        const footprint::Request r = tb::footprint_request(t);
+        p.request = {r.u, r.v, 0, r.shade};
+        p.r1u = r.r1u;
+        p.r1v = r.r1v;
+        p.r2u = r.r2u;
+        p.r2v = r.r2v;
+      } else {
+        p.request = tb::trilinear_request(t);
+      }
       if (face >= 0) out.face[f] = face;
       if (role == "bump") out.bump_texel[f] = static_cast<uint32_t>(run.result.outputs.at(i).f[0]);
       ++i;
@@ -94,10 +109,10 @@ size_t check_scene(const host::Scene& scene) {
     const texram::Clut32 clut = prog.clut.value_or(texram::Clut32{});
     for (const MaterialProgram& mp : programs.materials) {
       const host::Material& mat = scene.materials[static_cast<size_t>(mp.material)];
-      // The chip has no footprint marcher or tau unit yet; orders texture and composed sample
-      // at the vertices.
-      if (mp.chip != static_cast<int>(c) || mat.footprint || mat.tau || samples_at_vertices(mat))
-        continue;
+      // The tau unit (004) stays in front of the chip: its outputs are the texture unit's
+      // requests, so they are the chip's parameters. Orders texture and composed sample at the
+      // vertices: their pixels are the interpolated colours.
+      if (mp.chip != static_cast<int>(c) || samples_at_vertices(mat)) continue;
       SCOPED_TRACE(mat.name);
       // A chip per material, so that its page model counts this material's pixels alone.
       texram::chip::TexramChip chip(memory, clut);
@@ -118,9 +133,8 @@ size_t check_scene(const host::Scene& scene) {
           const int n = mp.drfs[k];
           if (k > 0 && !prog.drfs[static_cast<size_t>(n - 1)].takes_coords) continue;
           const std::string& role = role_of.at(n);
-          PixelParameter p;
+          PixelParameter p = units.by_role.at(role).at(f);
           p.lead = mp.drfs.front();
-          p.request = units.by_role.at(role).at(f);
           if (const auto face = units.face.find(f); face != units.face.end()) p.face = face->second;
           params.push_back(p);
         }

@@ -28,6 +28,9 @@ Drf random_drf(std::mt19937& rng, bool cube) {
   d.op = static_cast<DrfOp>(pick(kDrfOps));
   d.link = pick(8);
   d.takes_coords = pick(2) != 0;
+  d.footprint = pick(2) != 0;
+  d.log2_max_probes = pick(8);
+  d.q_rule = static_cast<footprint::QRule>(pick(2));
   d.cube = cube;
   if (cube) {
     for (uint32_t& b : d.face_base) b = rng() % (1u << formats::kBankAddr.width());

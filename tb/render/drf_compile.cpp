@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 
 #include "common/error.hpp"
 #include "texram/chip/chip_memory.hpp"
@@ -28,6 +29,7 @@ struct Step {
   bool takes_coords = false;
   std::string parameter;  // what its parameter transaction carries (takes_coords or the lead)
   std::array<std::shared_ptr<const texram::TexramTexture>, 6> faces{};  // a cube map
+  std::optional<footprint::Config> footprint;                           // the texture's
 };
 
 bool needs_clut(const texram::TexramTexture& t) {
@@ -65,8 +67,14 @@ std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex
     steps.push_back(map_step("diffuse", maps.diffuse, DrfOp::kShading, true, "(uN, vN)",
                              texram::Addressing::kSphere));
   }
-  Step texture{"", tex.texram, mat.sampler, DrfOp::kTexture, !steps.empty(), "(u, v, lambda), I_d",
+  Step texture{"",
+               tex.texram,
+               mat.sampler,
+               DrfOp::kTexture,
+               !steps.empty(),
+               mat.footprint ? "(u, v, r1, r2), I_d" : "(u, v, lambda), I_d",
                {}};
+  texture.footprint = mat.footprint;
   steps.push_back(texture);
   if (maps.reflectance) {
     steps.push_back(map_step("reflectance", maps.reflectance, DrfOp::kReflectance, false, "",
@@ -138,6 +146,10 @@ ScenePrograms compile_drfs(const host::Scene& scene, const std::vector<MaterialT
                        fmt::format("a chain of {} maps: the TEXRAM links at most {}", steps.size(),
                                    texram::chip::kMaxSteps));
     }
+    if (mat.footprint && !(mat.footprint->widths == footprint::Widths{})) {
+      throw InputError(scene.path, "materials." + mat.name + ".footprint",
+                       "the chip's footprint marcher has the default widths only");
+    }
     const texram::Clut32* clut = nullptr;
     for (const Step& s : steps) {
       if (needs_clut(*s.texture)) {
@@ -182,6 +194,11 @@ ScenePrograms compile_drfs(const host::Scene& scene, const std::vector<MaterialT
       d.op = s.op;
       d.takes_coords = s.takes_coords;
       d.link = k + 1 < steps.size() ? prog.drfs[k + 1] : 0;
+      if (s.footprint) {
+        d.footprint = true;
+        d.log2_max_probes = s.footprint->log2_max_probes;
+        d.q_rule = s.footprint->q_rule;
+      }
       const std::string label = mat.name + (s.role.empty() ? "" : "." + s.role);
       const auto place = [&](const std::shared_ptr<const texram::TexramTexture>& t,
                              const std::string& name, int face) {

@@ -38,7 +38,9 @@ uint32_t pack_shape(const Drf& d) {
 
 uint32_t pack_control(const Drf& d) {
   return static_cast<uint32_t>(d.op) | static_cast<uint32_t>(d.link) << 3 |
-         static_cast<uint32_t>(d.takes_coords) << 6 | static_cast<uint32_t>(d.sampler.combine) << 7;
+         static_cast<uint32_t>(d.takes_coords) << 6 |
+         static_cast<uint32_t>(d.sampler.combine) << 7 | static_cast<uint32_t>(d.footprint) << 9 |
+         static_cast<uint32_t>(d.log2_max_probes) << 10 | static_cast<uint32_t>(d.q_rule) << 13;
 }
 
 std::vector<DrfWrite> drf_writes(int number, const Drf& d) {
@@ -88,6 +90,9 @@ void apply(DrfFile& file, const DrfWrite& w) {
       d.link = static_cast<int>(bits(v, 3, 3));
       d.takes_coords = bits(v, 6, 1) != 0;
       d.sampler.combine = static_cast<Combine>(bits(v, 7, 2));
+      d.footprint = bits(v, 9, 1) != 0;
+      d.log2_max_probes = static_cast<int>(bits(v, 10, 3));
+      d.q_rule = static_cast<footprint::QRule>(bits(v, 13, 1));
       return;
     default:
       break;

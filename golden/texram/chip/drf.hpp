@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "footprint/q_rule.hpp"
 #include "formats/formats.hpp"
 #include "texram/sampler_config.hpp"
 
@@ -55,7 +56,13 @@ struct Drf {
   DrfOp op = DrfOp::kTexture;
   int link = 0;               // next DRF 1..7; 0 ends the chain
   bool takes_coords = false;  // wait for the pixel's next parameter before the access
-  bool cube = false;          // DRF 7: the six faces below, each log2_w x log2_h
+  // Footprint assembly (000 §10) of the DRF's samples: N trilinear probes along the longer
+  // derivative, averaged (footprint/footprint.hpp at the chip's widths), from the parameter's
+  // r1, r2. Off: one trilinear sample at the parameter's lambda.
+  bool footprint = false;
+  int log2_max_probes = 3;  // ProbeLog2 (the field's 5..7 act as 4)
+  footprint::QRule q_rule = footprint::QRule::kHeights;
+  bool cube = false;  // DRF 7: the six faces below, each log2_w x log2_h
   std::array<uint32_t, kCubeFaces> face_base{};
   friend bool operator==(const Drf&, const Drf&) = default;
 };
@@ -73,7 +80,8 @@ struct DrfWrite {
 // Shape word: log2_w 3:0, log2_h 7:4, kind 10:8, single_channel 12:11, filter 14:13,
 // border_u 16:15, border_v 18:17, addressing 19, cube 20.
 uint32_t pack_shape(const Drf& d);
-// Control word: op 2:0, link 5:3, takes_coords 6, combine 8:7.
+// Control word: op 2:0, link 5:3, takes_coords 6, combine 8:7, footprint 9,
+// log2_max_probes 12:10, q_rule 13.
 uint32_t pack_control(const Drf& d);
 
 // The writes that load DRF `number` (1..7) with `d`: every field (faces only when d.cube).

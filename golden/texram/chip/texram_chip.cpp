@@ -1,7 +1,9 @@
 #include "texram/chip/texram_chip.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
+#include "footprint/footprint.hpp"
 #include "texram/specular_combine.hpp"
 #include "texram/trilinear.hpp"
 
@@ -13,10 +15,11 @@ Geometry drf_geometry(const Drf& d) {
   return Geometry(d.log2_w, d.log2_h, four ? 4 : 1, k == TexelKind::kCcc);
 }
 
-uint32_t TexramChip::sample(int number, const Drf& d, const PixelParameter& p, uint32_t shade) {
+uint32_t TexramChip::sample(int number, const Drf& d, const PixelParameter& p,
+                            const Request& request) {
   const Geometry g = drf_geometry(d);
   const uint32_t base = d.cube ? d.face_base[static_cast<size_t>(p.face % kCubeFaces)] : d.base;
-  const SamplePlan plan = plan_sample(g, d.sampler, p.request);  // addressing included
+  const SamplePlan plan = plan_sample(g, d.sampler, request);  // addressing included
   AccessData data{};
   for (int plane = 0; plane < plan.planes; ++plane) {
     ChipAccess a;
@@ -41,7 +44,25 @@ uint32_t TexramChip::sample(int number, const Drf& d, const PixelParameter& p, u
                      d.sampler.kind, d.sampler, clut_);
     }
   }
-  return combine(blend_taps(plan, colours, d.sampler.widths), d.sampler, shade);
+  return combine(blend_taps(plan, colours, d.sampler.widths), d.sampler, request.shade);
+}
+
+uint32_t TexramChip::assemble(int number, const Drf& d, const PixelParameter& p, uint32_t shade) {
+  Request request = p.request;
+  request.shade = shade;
+  if (!d.footprint) return sample(number, d, p, request);
+  const footprint::Request fr{request.u, request.v, p.r1u, p.r1v, p.r2u, p.r2v, shade};
+  footprint::Config config;
+  config.log2_max_probes = std::min(d.log2_max_probes, formats::kMaxProbeLog2);  // 5..7 act as 4
+  config.q_rule = d.q_rule;
+  const footprint::Plan plan = footprint::plan(fr, config);
+  std::array<uint32_t, 1 << formats::kMaxProbeLog2> colours{};
+  const int n = 1 << plan.log2_n;
+  for (int i = 0; i < n; ++i) {
+    colours[static_cast<size_t>(i)] =
+        sample(number, d, p, footprint::probe(fr, plan, i, d.sampler));
+  }
+  return footprint::average(std::span(colours.data(), static_cast<size_t>(n)), plan.log2_n);
 }
 
 void TexramChip::pixel(const std::vector<PixelParameter>& params, size_t& next,
@@ -68,7 +89,7 @@ void TexramChip::pixel(const std::vector<PixelParameter>& params, size_t& next,
       if (d.op == DrfOp::kTexture && !shaded_by_map) shade = p->request.shade;
     }
     ++stats_.steps;
-    const uint32_t s = sample(number, d, *p, shade);
+    const uint32_t s = assemble(number, d, *p, shade);
     switch (d.op) {
       case DrfOp::kTexture:
         colour = s;

@@ -27,9 +27,11 @@ namespace tmu::texram::chip {
 
 // One parameter transaction of a pixel: the first names the leading DRF.
 struct PixelParameter {
-  int lead = 1;     // DrfIndex, read from a pixel's first parameter only
-  Request request;  // u, v (or uN, vN), lambda, shade I_d
-  int face = 0;     // CubeFace, for DRF 7's cube map
+  int lead = 1;              // DrfIndex, read from a pixel's first parameter only
+  Request request;           // u, v (or uN, vN), lambda, shade I_d
+  int32_t r1u = 0, r1v = 0;  // TexDeriv: d(u, v)/dx, for a DRF with footprint assembly
+  int32_t r2u = 0, r2v = 0;  // TexDeriv: d(u, v)/dy
+  int face = 0;              // CubeFace, for DRF 7's cube map
 };
 
 struct ChipOutput {
@@ -73,7 +75,9 @@ class TexramChip {
 
  private:
   // The DRF's map sampled at `request`: the datapath's colour before the pixel's combines.
-  uint32_t sample(int number, const Drf& d, const PixelParameter& p, uint32_t shade);
+  uint32_t sample(int number, const Drf& d, const PixelParameter& p, const Request& request);
+  // With footprint assembly: the probes' samples averaged (footprint::sample's steps).
+  uint32_t assemble(int number, const Drf& d, const PixelParameter& p, uint32_t shade);
 
   const ChipMemory& memory_;
   const Clut32& clut_;
