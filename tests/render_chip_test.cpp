@@ -150,7 +150,9 @@ size_t check_scene(const host::Scene& scene) {
           return checked;
         }
         EXPECT_EQ(out.back(), (ChipOutput{rgba[f], true})) << "fragment " << f;
-        if (outputs == 2) EXPECT_EQ(out[0], (ChipOutput{bump->second, false})) << "fragment " << f;
+        if (outputs == 2) {
+          EXPECT_EQ(out[0], (ChipOutput{bump->second, false})) << "fragment " << f;
+        }
         ++checked;
       }
       EXPECT_FALSE(chip.stats().step_limit);

@@ -98,6 +98,15 @@ TEST(TexramDrfTest, ChainsFollowTheLinksAndRefuseCycles) {
   all[2].cube = false;
   all[6].cube = true;
   EXPECT_NO_THROW(check_program(all, {1}));
+  // A detail map: 2 -> offsets 3 -> detail 4, or the chip could not find its maps.
+  all[1].detail = true;
+  EXPECT_THROW(check_program(all, {1}), ProgramError);
+  all[2].op = DrfOp::kOffsets;
+  EXPECT_THROW(check_program(all, {1}), ProgramError);
+  all[3].op = DrfOp::kDetail;
+  EXPECT_NO_THROW(check_program(all, {1}));
+  all[1].op = DrfOp::kEmit;  // only a texture or reflectance map has a detail map
+  EXPECT_THROW(check_program(all, {1}), ProgramError);
 }
 
 }  // namespace

@@ -55,7 +55,7 @@ std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex
   std::vector<Step> steps;
   const auto map_step = [](const std::string& role, const MapTexture& m, DrfOp op, bool takes,
                            const std::string& parameter, texram::Addressing addressing) {
-    Step s{role, m.texture, m.sampler, op, takes, parameter, {}};
+    Step s{role, m.texture, m.sampler, op, takes, parameter, {}, std::nullopt};
     s.sampler.addressing = addressing;
     return s;
   };
@@ -67,14 +67,9 @@ std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex
     steps.push_back(map_step("diffuse", maps.diffuse, DrfOp::kShading, true, "(uN, vN)",
                              texram::Addressing::kSphere));
   }
-  Step texture{"",
-               tex.texram,
-               mat.sampler,
-               DrfOp::kTexture,
-               !steps.empty(),
-               mat.footprint ? "(u, v, r1, r2), I_d" : "(u, v, lambda), I_d",
-               {}};
-  texture.footprint = mat.footprint;
+  const std::string coords = mat.footprint ? "(u, v, r1, r2), I_d" : "(u, v, lambda), I_d";
+  Step texture{"",     tex.texram, mat.sampler,  DrfOp::kTexture, !steps.empty(),
+               coords, {},         mat.footprint};
   steps.push_back(texture);
   if (maps.reflectance) {
     steps.push_back(map_step("reflectance", maps.reflectance, DrfOp::kReflectance, false, "",

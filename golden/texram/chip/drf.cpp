@@ -1,6 +1,10 @@
 #include "texram/chip/drf.hpp"
 
 #include <algorithm>
+#include <optional>
+
+#include "texram/layout.hpp"
+#include "texram/page_model.hpp"
 
 namespace tmu::texram::chip {
 namespace {
@@ -23,6 +27,10 @@ std::string_view name(DrfOp op) {
       return "environment";
     case DrfOp::kEmit:
       return "emit";
+    case DrfOp::kOffsets:
+      return "offsets";
+    case DrfOp::kDetail:
+      return "detail";
   }
   return "?";
 }
@@ -40,7 +48,8 @@ uint32_t pack_control(const Drf& d) {
   return static_cast<uint32_t>(d.op) | static_cast<uint32_t>(d.link) << 3 |
          static_cast<uint32_t>(d.takes_coords) << 6 |
          static_cast<uint32_t>(d.sampler.combine) << 7 | static_cast<uint32_t>(d.footprint) << 9 |
-         static_cast<uint32_t>(d.log2_max_probes) << 10 | static_cast<uint32_t>(d.q_rule) << 13;
+         static_cast<uint32_t>(d.log2_max_probes) << 10 | static_cast<uint32_t>(d.q_rule) << 13 |
+         static_cast<uint32_t>(d.detail) << 14 | static_cast<uint32_t>(d.detail_combine) << 15;
 }
 
 std::vector<DrfWrite> drf_writes(int number, const Drf& d) {
@@ -93,6 +102,8 @@ void apply(DrfFile& file, const DrfWrite& w) {
       d.footprint = bits(v, 9, 1) != 0;
       d.log2_max_probes = static_cast<int>(bits(v, 10, 3));
       d.q_rule = static_cast<footprint::QRule>(bits(v, 13, 1));
+      d.detail = bits(v, 14, 1) != 0;
+      d.detail_combine = static_cast<DetailCombine>(bits(v, 15, 1));
       return;
     default:
       break;
@@ -100,6 +111,12 @@ void apply(DrfFile& file, const DrfWrite& w) {
   const int face = (w.field & 15) - static_cast<int>(DrfFieldId::kFace0);
   if (number == kCubeDrf && face >= 0 && face < kCubeFaces)
     d.face_base[static_cast<size_t>(face)] = bits(v, 0, kBaseBits);
+}
+
+uint32_t offsets_v_base(const Drf& offsets) {
+  const Geometry g(offsets.log2_w, offsets.log2_h);  // one byte plane: the offsets are bytes
+  constexpr uint32_t kPage = uint32_t{1} << kPageBits;
+  return offsets.base + (g.bank_cells() + kPage - 1) / kPage * kPage;
 }
 
 std::vector<int> chain(const DrfFile& file, int lead) {
@@ -129,6 +146,18 @@ void check_program(const DrfFile& file, const std::vector<int>& leads) {
       if (d.cube && n != kCubeDrf) {
         throw ProgramError("DRF " + std::to_string(n) + " holds a cube map: only DRF " +
                            std::to_string(kCubeDrf) + " can");
+      }
+      if (d.detail) {
+        const auto op_of = [&](int m) {
+          return m == 0 ? std::optional<DrfOp>() : file[static_cast<size_t>(m - 1)].op;
+        };
+        const int o = d.link, dm = o == 0 ? 0 : file[static_cast<size_t>(o - 1)].link;
+        if ((d.op != DrfOp::kTexture && d.op != DrfOp::kReflectance) ||
+            op_of(o) != DrfOp::kOffsets || op_of(dm) != DrfOp::kDetail) {
+          throw ProgramError("DRF " + std::to_string(n) +
+                             " has a detail map: it must be a texture or reflectance DRF linked to "
+                             "an offsets DRF linked to a detail DRF");
+        }
       }
       if (static_cast<int>(d.op) >= kDrfOps) {
         throw ProgramError("DRF " + std::to_string(n) + ": op " +

@@ -16,6 +16,7 @@
 
 #include "footprint/q_rule.hpp"
 #include "formats/formats.hpp"
+#include "texram/detail_definition.hpp"
 #include "texram/sampler_config.hpp"
 
 namespace tmu::texram::chip {
@@ -32,8 +33,12 @@ enum class DrfOp : uint8_t {
   kReflectance = 2,  // R of eq. 7 for the environment after it
   kEnvironment = 3,  // E (or I_s): C = min(255, C_d + R E / 255) per channel (eq. 6-7)
   kEmit = 4,         // the sample leaves the chip (a bump texel for the deflection unit)
+  // A detail map's two DRFs (000 §9), after the texture or reflectance DRF they serve (which
+  // has `detail` set and links to them): visited through that DRF only.
+  kOffsets = 5,  // the u-offset map; the v-offset map follows it in the memory (offsets_v_base)
+  kDetail = 6,   // the detail mipmap
 };
-inline constexpr int kDrfOps = 5;
+inline constexpr int kDrfOps = 7;
 std::string_view name(DrfOp op);
 
 // The write port's field numbers (DrfField).
@@ -62,6 +67,11 @@ struct Drf {
   bool footprint = false;
   int log2_max_probes = 3;  // ProbeLog2 (the field's 5..7 act as 4)
   footprint::QRule q_rule = footprint::QRule::kHeights;
+  // Detail maps (000 §9, texram/detail.hpp): below level 0 this DRF's samples come from the
+  // offsets DRF it links to and the detail DRF that one links to, combined by detail_combine;
+  // the chain goes on at the detail DRF's link.
+  bool detail = false;
+  DetailCombine detail_combine = DetailCombine::kReplace;
   bool cube = false;  // DRF 7: the six faces below, each log2_w x log2_h
   std::array<uint32_t, kCubeFaces> face_base{};
   friend bool operator==(const Drf&, const Drf&) = default;
@@ -81,7 +91,7 @@ struct DrfWrite {
 // border_u 16:15, border_v 18:17, addressing 19, cube 20.
 uint32_t pack_shape(const Drf& d);
 // Control word: op 2:0, link 5:3, takes_coords 6, combine 8:7, footprint 9,
-// log2_max_probes 12:10, q_rule 13.
+// log2_max_probes 12:10, q_rule 13, detail 14, detail_combine 15.
 uint32_t pack_control(const Drf& d);
 
 // The writes that load DRF `number` (1..7) with `d`: every field (faces only when d.cube).
@@ -98,13 +108,17 @@ struct ProgramError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Where a v-offset map sits: right after the u-offset map of an offsets DRF (page aligned).
+uint32_t offsets_v_base(const Drf& offsets);
+
 // The DRF numbers a pixel led by `lead` visits, in order: lead, its link, ... up to the DRF
 // whose link is 0. Throws ProgramError naming the DRFs of a cycle, or when lead is not 1..7.
 // (Seven DRFs and no cycle: at most kMaxSteps.)
 std::vector<int> chain(const DrfFile& file, int lead);
 
-// Every DRF of `file` that some lead in `leads` reaches is valid: its chain is finite, and a
-// cube map sits only in DRF 7. Throws ProgramError.
+// Every DRF of `file` that some lead in `leads` reaches is valid: its chain is finite, a cube
+// map sits only in DRF 7, a detail DRF is a texture or reflectance DRF linked to an offsets DRF
+// linked to a detail DRF. Throws ProgramError.
 void check_program(const DrfFile& file, const std::vector<int>& leads);
 
 }  // namespace tmu::texram::chip

@@ -22,6 +22,7 @@
 #include "texram/page_model.hpp"
 #include "texram/sampler_config.hpp"
 #include "texram/texture.hpp"
+#include "texram/trilinear.hpp"
 
 namespace tmu::texram::chip {
 
@@ -48,7 +49,7 @@ struct ChipAccess {
 };
 
 struct ChipStats {
-  uint64_t pixels = 0, parameters = 0, steps = 0;  // steps: DRF visits (map samples)
+  uint64_t pixels = 0, parameters = 0, steps = 0;  // steps: DRF visits (a detail map's: 3)
   PageStats pages;                                 // the shared memory's page model
   bool step_limit = false;                         // sticky: a pixel ran into kMaxSteps
 };
@@ -76,6 +77,13 @@ class TexramChip {
  private:
   // The DRF's map sampled at `request`: the datapath's colour before the pixel's combines.
   uint32_t sample(int number, const Drf& d, const PixelParameter& p, const Request& request);
+  // One read of DRF `number`'s map at `base` (its plan through plan_out): the trilinear
+  // datapath's colour with the DRF's eq. 5.
+  uint32_t read(int number, const Drf& d, uint32_t base, const Request& request,
+                SamplePlan* plan_out);
+  // With a detail map (d.detail, lambda < 0): texram/detail.hpp's sample, the offsets and the
+  // detail map read through the DRFs the texture links to.
+  uint32_t with_detail(int number, const Drf& d, const PixelParameter& p, const Request& request);
   // With footprint assembly: the probes' samples averaged (footprint::sample's steps).
   uint32_t assemble(int number, const Drf& d, const PixelParameter& p, uint32_t shade);
 
