@@ -4,7 +4,9 @@
 // does not sample, with the reason. --writes lists the write-port words that load the DRFs.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <memory>
+#include <string_view>
 
 #include "render/drf_compile.hpp"
 #include "render/pipeline.hpp"
@@ -28,6 +30,17 @@ std::string borders(const texram::SamplerConfig& s) {
   return fmt::format("{}/{}", texram::name(s.border_u), texram::name(s.border_v));
 }
 
+// What else the DRF's samples do: footprint assembly (its most probes), a detail map (its rule).
+std::string also(const Drf& d) {
+  std::string out;
+  if (d.footprint) out = fmt::format("footprint <={}", 1 << std::min(d.log2_max_probes, 4));
+  if (d.detail) {
+    out += fmt::format("{}detail {}", out.empty() ? "" : ", ",
+                       d.detail_combine == texram::DetailCombine::kModulate ? "mod" : "repl");
+  }
+  return out.empty() ? "-" : out;
+}
+
 std::string mib(uint64_t cells) {  // eight banks of one byte a cell
   return fmt::format("{:.2f} MiB", static_cast<double>(cells) * 8 / (1 << 20));
 }
@@ -37,8 +50,11 @@ void print_chip(const host::Scene& scene, const render::ChipProgram& chip, int c
              chip.used_drfs == 1 ? "" : "s", chip.cube_used ? " and DRF 7 (cube)" : "",
              chip.maps.size(), mib(chip.used_cells), mib(texram::chip::kBankCells),
              100.0 * chip.used_cells / texram::chip::kBankCells, chip.clut ? "in use" : "unused");
-  fmt::print("  {:>3}  {:<11} {:<28} {:>8}  {:>9}  {:<11} {:<9} {:<13} {:<7} {:>4}  {}\n", "DRF",
-             "op", "map", "base", "size", "kind", "filter", "borders", "address", "link", "coords");
+  // One format for the header and the rows, so the columns line up.
+  constexpr std::string_view kRow =
+      "  {:>3}  {:<11} {:<28} {:>8}  {:>9}  {:<11} {:<9} {:<13} {:<7} {:<16} {:>4}  {}\n";
+  fmt::print(fmt::runtime(kRow), "DRF", "op", "map", "base", "size", "kind", "filter", "borders",
+             "address", "also", "link", "coords");
   for (int n = 1; n <= kDrfs; ++n) {
     const bool used = n <= chip.used_drfs || (n == texram::chip::kCubeDrf && chip.cube_used);
     if (!used) continue;
@@ -50,12 +66,11 @@ void print_chip(const host::Scene& scene, const render::ChipProgram& chip, int c
         break;
       }
     }
-    fmt::print("  {:>3}  {:<11} {:<24} {:>#8x}  {:>9}  {:<11} {:<9} {:<13} {:<7} {:>4}  {}\n", n,
-               texram::chip::name(d.op), map, d.base,
+    fmt::print(fmt::runtime(kRow), n, texram::chip::name(d.op), map, fmt::format("{:#x}", d.base),
                fmt::format("{}x{}", 1 << d.log2_w, 1 << d.log2_h), texram::name(d.sampler.kind),
                texram::name(d.sampler.filter), borders(d.sampler),
-               texram::name(d.sampler.addressing), d.link == 0 ? "end" : std::to_string(d.link),
-               d.takes_coords ? "new" : "-");
+               texram::name(d.sampler.addressing), also(d),
+               d.link == 0 ? "end" : std::to_string(d.link), d.takes_coords ? "new" : "-");
   }
   fmt::print("  memory map (cells of every bank):\n");
   for (const render::ChipMap& m : chip.maps) {
