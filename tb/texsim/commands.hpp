@@ -17,6 +17,7 @@ void add_pattern_command(CLI::App& app, ExitCode& exit_code);
 void add_terrain_command(CLI::App& app, ExitCode& exit_code);
 void add_nurbs_command(CLI::App& app, ExitCode& exit_code);
 void add_drf_command(CLI::App& app, ExitCode& exit_code);
+void add_regress_command(CLI::App& app, ExitCode& exit_code);
 void add_bumpmap_command(CLI::App& app, ExitCode& exit_code);
 void add_sample_command(CLI::App& app, ExitCode& exit_code);
 void add_mipgen_command(CLI::App& app, ExitCode& exit_code);

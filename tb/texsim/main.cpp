@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   tmu::texsim::add_terrain_command(app, exit_code);
   tmu::texsim::add_nurbs_command(app, exit_code);
   tmu::texsim::add_drf_command(app, exit_code);
+  tmu::texsim::add_regress_command(app, exit_code);
   tmu::texsim::add_bumpmap_command(app, exit_code);
   tmu::texsim::add_formats_command(app, exit_code);
   try {

@@ -1,0 +1,27 @@
+// A regression list (`texsim regress LIST`, docs/regress.md): what to run, one line a test
+// family, expanded into single tests that each are one texsim command.
+//
+//   # comment
+//   cosim BLOCK [--seeds A..B] [cosim options...]   one test per seed (default --seeds 1..1)
+//   render SCENE [render options...]                one test (SCENE relative to the list's folder)
+//
+// Every option is passed to texsim as written; the runner adds only where the test's outputs
+// go (--wave-dir, --out), so a failure's command line reproduces it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tmu::texsim {
+
+struct RegressTest {
+  std::string name;               // unique: "cosim.trilinear.seed3", "render.default.2"
+  std::vector<std::string> args;  // texsim's arguments, without the outputs' places
+  std::string kind;               // "cosim" or "render"
+};
+
+// Throws InputError(path, "line N", reason): an unknown command, a missing block or scene, a
+// malformed or empty seed range, a test name twice.
+std::vector<RegressTest> read_regress_list(const std::string& path);
+
+}  // namespace tmu::texsim

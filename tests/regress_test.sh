@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# `texsim regress LIST`: a list of cosim seeds and a render runs on two jobs; the JUnit XML counts
+# every test and the one failure (an injected fault), whose summary entry gives the command that
+# reproduces it (run again, it fails the same way), its waveform and its log; a test past the
+# timeout is killed and fails; a malformed list is exit 2 naming the line. Usage:
+# tests/regress_test.sh PATH/TO/texsim
+source "$(dirname "${BASH_SOURCE[0]}")/check_lib.sh" "$1"
+cd "$work" || exit 1
+
+cat >list.txt <<LIST
+# cosim seeds, a fault injected into one, a render checked against golden
+cosim ccc_decoder --seeds 1..3 --count 300
+cosim specular_combine --seeds 5..5 --count 200 --inject-fault 3
+render $root/scenes/plain.json --engine golden
+LIST
+"$texsim" regress list.txt --out out --jobs 2 >run.txt 2>&1
+code=$?
+cat run.txt
+[[ $code -eq 1 ]] && pass "exit 1 with a failure" || fail "exit $code"
+grep -q 'tests="5" failures="1"' out/junit.xml && pass "JUnit: 5 tests, 1 failure" ||
+  fail "JUnit: $(head -3 out/junit.xml)"
+grep -q '<testcase classname="render" name="render.plain.4"' out/junit.xml &&
+  pass "JUnit names the render" || fail "no render in the JUnit XML"
+repro=$(sed -n 's/^  reproduce: //p' out/summary.txt)
+[[ $repro == *"cosim specular_combine --seed 5 --count 200 --inject-fault 3 --wave-dir"* ]] &&
+  pass "the summary gives the reproduce command" || fail "reproduce: '$repro'"
+wave=$(sed -n 's/^  waveform: //p' out/summary.txt)
+[[ -s $wave ]] && pass "the failure's waveform is written ($wave)" || fail "waveform: '$wave'"
+[[ -s out/logs/cosim.specular_combine.seed5.log ]] && pass "its log is kept" || fail "no log"
+eval "$repro" >again.txt 2>&1
+again=$?
+[[ $again -eq 1 ]] && grep -q "MISMATCH rtl" again.txt &&
+  pass "the reproduce command fails the same way" || fail "reproduce ran: exit $again"
+
+echo "render $root/scenes/grazing.json --engine hls" >slow.txt
+"$texsim" regress slow.txt --out slow --jobs 1 --timeout 1 >slow_run.txt 2>&1
+[[ $? -eq 1 ]] && grep -q "killed after the timeout" slow/summary.txt &&
+  pass "a test past the timeout is killed and fails" || fail "$(cat slow_run.txt)"
+
+printf 'cosim ccc_decoder --seeds 3..1\n' >bad.txt
+"$texsim" regress bad.txt --out bad >bad_run.txt 2>&1
+[[ $? -eq 2 ]] && grep -q "bad.txt: line 1: --seeds: '3..1' is empty" bad_run.txt &&
+  pass "an empty seed range names the line" || fail "$(cat bad_run.txt)"
+printf '\nsimulate everything\n' >bad2.txt
+"$texsim" regress bad2.txt --out bad2 >bad2_run.txt 2>&1
+[[ $? -eq 2 ]] && grep -q "line 2: unknown command 'simulate'" bad2_run.txt &&
+  pass "an unknown command names the line" || fail "$(cat bad2_run.txt)"
+finish
