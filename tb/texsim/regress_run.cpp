@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
 #include <map>
 #include <stdexcept>
 #include <thread>
@@ -62,7 +63,39 @@ std::vector<fs::path> waveforms_in(const fs::path& dir) {
   return out;
 }
 
+// Where the test's outputs go, and the waveforms found there.
+fs::path output_dir(const RegressOptions& o, const RegressTest& t) {
+  return o.out / (t.kind == "cosim" ? "waves" : "renders") / t.name;
+}
+
 }  // namespace
+
+void write_result_file(const RegressOptions& options, const RegressResult& r) {
+  fs::create_directories(options.out / "results");
+  std::ofstream f(options.out / "results" / (r.test.name + ".txt"));
+  f << "exit_code " << r.exit_code << "\nseconds " << r.seconds << "\ntimed_out "
+    << (r.timed_out ? 1 : 0) << "\n";
+}
+
+RegressResult read_result_file(const RegressOptions& options, const RegressTest& test) {
+  RegressResult r;
+  r.test = test;
+  r.command = command_of(test, options);
+  r.log = options.out / "logs" / (test.name + ".log");
+  r.exit_code = -1;
+  std::ifstream f(options.out / "results" / (test.name + ".txt"));
+  for (std::string key; f >> key;) {
+    if (key == "exit_code") f >> r.exit_code;
+    if (key == "seconds") f >> r.seconds;
+    if (key == "timed_out") {
+      int t = 0;
+      f >> t;
+      r.timed_out = t != 0;
+    }
+  }
+  r.waveforms = waveforms_in(output_dir(options, test));
+  return r;
+}
 
 std::vector<RegressResult> run_regression(const std::vector<RegressTest>& tests,
                                           const RegressOptions& options,
@@ -103,8 +136,7 @@ std::vector<RegressResult> run_regression(const std::vector<RegressTest>& tests,
     r.seconds = std::chrono::duration<double>(Clock::now() - it->second.start).count();
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     if (r.timed_out) r.exit_code = -1;
-    const std::string where = r.test.kind == "cosim" ? "waves" : "renders";
-    r.waveforms = waveforms_in(options.out / where / r.test.name);
+    r.waveforms = waveforms_in(output_dir(options, r.test));
     running.erase(it);
     ++done;
     if (progress) progress(r);

@@ -28,6 +28,13 @@ struct RegressOptions {
   double timeout_s = 600;  // a test still running then is killed and fails
 };
 
+// One test's outcome as a file (a Slurm array task writes it, the merge reads it):
+// OUT/results/NAME.txt with "exit_code N", "seconds S", "timed_out 0|1".
+void write_result_file(const RegressOptions& options, const RegressResult& result);
+// The result of `test` from its file, with its command, log and waveforms as run_regression
+// gives them; a test without a file (its task never ran) fails with exit code -1.
+RegressResult read_result_file(const RegressOptions& options, const RegressTest& test);
+
 // Runs every test; the results in the list's order. `progress` is called as each test ends.
 std::vector<RegressResult> run_regression(const std::vector<RegressTest>& tests,
                                           const RegressOptions& options,
