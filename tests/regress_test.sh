@@ -2,7 +2,8 @@
 # `texsim regress LIST`: a list of cosim seeds and a render runs on two jobs; the JUnit XML counts
 # every test and the one failure (an injected fault), whose summary entry gives the command that
 # reproduces it (run again, it fails the same way), its waveform and its log; a test past the
-# timeout is killed and fails; a malformed list is exit 2 naming the line. Usage:
+# timeout is killed and fails; a frame's bands run as tests and are joined equal to the whole
+# frame; a malformed list is exit 2 naming the line. Usage:
 # tests/regress_test.sh PATH/TO/texsim
 source "$(dirname "${BASH_SOURCE[0]}")/check_lib.sh" "$1"
 cd "$work" || exit 1
@@ -31,6 +32,14 @@ eval "$repro" >again.txt 2>&1
 again=$?
 [[ $again -eq 1 ]] && grep -q "MISMATCH rtl" again.txt &&
   pass "the reproduce command fails the same way" || fail "reproduce ran: exit $again"
+
+# A frame split into bands, each a test (through Slurm too), joined equal to the whole frame.
+echo "render $root/scenes/plain.json --engine golden --bands 3" >bands.txt
+"$texsim" regress bands.txt --out bands --jobs 2 >bands_run.txt 2>&1
+joined=$(sed -n 's/^bands of render.plain.1 joined: //p' bands/summary.txt)
+"$texsim" render "$root/scenes/plain.json" --engine golden --out whole >/dev/null 2>&1
+[[ -s $joined ]] && idiff -q "$joined" whole/render.png >/dev/null 2>&1 &&
+  pass "3 bands as 3 tests, joined equal to the whole frame" || fail "$(cat bands_run.txt)"
 
 echo "render $root/scenes/grazing.json --engine hls" >slow.txt
 "$texsim" regress slow.txt --out slow --jobs 1 --timeout 1 >slow_run.txt 2>&1

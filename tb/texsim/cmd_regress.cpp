@@ -15,6 +15,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "texsim/commands.hpp"
+#include "texsim/regress_bands.hpp"
 #include "texsim/regress_list.hpp"
 #include "texsim/regress_report.hpp"
 #include "texsim/regress_run.hpp"
@@ -51,14 +52,20 @@ int report(const Args& a, const RegressOptions& o, const std::vector<RegressResu
            double seconds) {
   write_junit(o.out / "junit.xml", "texsim regress " + fs::path(a.list).filename().string(),
               results);
-  const std::string text = summary(a.list, results, seconds, o.jobs);
+  std::string text = summary(a.list, results, seconds, o.jobs);
+  bool merged = true;
+  for (const BandMerge& m : merge_band_groups(o, results)) {
+    text += m.merged() ? fmt::format("\nbands of {} joined: {}\n", m.group, m.image)
+                       : fmt::format("\nbands of {} not joined: {}\n", m.group, m.error);
+    merged = merged && m.merged();
+  }
   write_file_atomically((o.out / "summary.txt").string(), text);
   fmt::print("\n{}junit: {}\nsummary: {}\n", text, (o.out / "junit.xml").string(),
              (o.out / "summary.txt").string());
   for (const RegressResult& r : results) {
     if (!r.passed()) return 1;
   }
-  return 0;
+  return merged ? 0 : 1;
 }
 
 // The Slurm job array: one task per test, each `texsim regress LIST --task I` with the same

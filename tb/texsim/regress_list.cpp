@@ -1,5 +1,8 @@
 #include "texsim/regress_list.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -79,7 +82,8 @@ std::vector<RegressTest> read_regress_list(const std::string& path) {
       for (uint64_t s = seeds.first; s <= seeds.second; ++s) {
         RegressTest t{"cosim." + w[1] + ".seed" + std::to_string(s),
                       {"cosim", w[1], "--seed", std::to_string(s)},
-                      "cosim"};
+                      "cosim",
+                      ""};
         t.args.insert(t.args.end(), rest.begin(), rest.end());
         add(std::move(t), where);
       }
@@ -88,11 +92,34 @@ std::vector<RegressTest> read_regress_list(const std::string& path) {
         throw InputError(path, where, "render needs a scene: render SCENE ...");
       const fs::path scene = fs::path(w[1]).is_absolute() ? fs::path(w[1]) : folder / w[1];
       if (!fs::exists(scene)) throw InputError(path, where, "no scene " + scene.string());
-      RegressTest t{"render." + scene.stem().string() + "." + std::to_string(number),
-                    {"render", scene.string()},
-                    "render"};
-      t.args.insert(t.args.end(), w.begin() + 2, w.end());
-      add(std::move(t), where);
+      const std::string name = "render." + scene.stem().string() + "." + std::to_string(number);
+      std::vector<std::string> rest;
+      int bands = 0;
+      for (size_t i = 2; i < w.size(); ++i) {
+        if (w[i] != "--bands") {
+          rest.push_back(w[i]);
+          continue;
+        }
+        size_t end = 0;
+        try {
+          if (i + 1 < w.size()) bands = std::stoi(w[i + 1], &end);
+        } catch (const std::exception&) {
+        }
+        if (i + 1 == w.size() || end != w[i + 1].size() || bands < 1 || bands > 256)
+          throw InputError(path, where, "--bands needs a count 1..256");
+        ++i;
+      }
+      if (bands > 0 && std::find(rest.begin(), rest.end(), "--tile") != rest.end())
+        throw InputError(path, where, "--bands sets each band's --tile: not both");
+      for (int b = 0; b < std::max(bands, 1); ++b) {
+        RegressTest t{bands ? name + ".band" + std::to_string(b) : name,
+                      {"render", scene.string()},
+                      "render",
+                      bands ? name : ""};
+        t.args.insert(t.args.end(), rest.begin(), rest.end());
+        if (bands) t.args.insert(t.args.end(), {"--tile", fmt::format("{}/{}", b, bands)});
+        add(std::move(t), where);
+      }
     } else {
       throw InputError(path, where, "unknown command '" + w[0] + "' (cosim or render)");
     }

@@ -4,6 +4,8 @@
 //   # comment
 //   cosim BLOCK [--seeds A..B] [cosim options...]   one test per seed (default --seeds 1..1)
 //   render SCENE [render options...]                one test (SCENE relative to the list's folder)
+//   render SCENE --bands N [render options...]      N tests, band i of N each (--tile i/N),
+//                                                   joined into one image when all passed
 //
 // Every option is passed to texsim as written; the runner adds only where the test's outputs
 // go (--wave-dir, --out), so a failure's command line reproduces it.
@@ -18,10 +20,12 @@ struct RegressTest {
   std::string name;               // unique: "cosim.trilinear.seed3", "render.default.2"
   std::vector<std::string> args;  // texsim's arguments, without the outputs' places
   std::string kind;               // "cosim" or "render"
+  std::string group;              // a render's bands: the name of the whole frame; else ""
 };
 
 // Throws InputError(path, "line N", reason): an unknown command, a missing block or scene, a
-// malformed or empty seed range, a test name twice.
+// malformed or empty seed range, a band count outside 1..256, --tile with --bands, a test name
+// twice.
 std::vector<RegressTest> read_regress_list(const std::string& path);
 
 }  // namespace tmu::texsim
