@@ -16,8 +16,8 @@ VolumeGeometry::VolumeGeometry(uint32_t nx, uint32_t ny, uint32_t nz) : nx_(nx),
     }
   }
   bricks_x_ = (nx + 15) / 16;
-  bricks_y_ = (ny + 15) / 16;
-  const uint64_t cells = uint64_t{bricks_x_} * bricks_y_ * ((nz + 7) / 8) * 512;
+  bricks_y_ = (ny + 7) / 8;
+  const uint64_t cells = uint64_t{bricks_x_} * bricks_y_ * ((nz + 15) / 16) * 512;
   if (cells > (uint64_t{1} << formats::kBankAddr.width())) {
     throw std::invalid_argument("VolumeGeometry: " + std::to_string(nx) + " x " +
                                 std::to_string(ny) + " x " + std::to_string(nz) +
@@ -28,8 +28,8 @@ VolumeGeometry::VolumeGeometry(uint32_t nx, uint32_t ny, uint32_t nz) : nx_(nx),
 
 texram::BankCell VolumeGeometry::cell(uint32_t x, uint32_t y, uint32_t z) const {
   if (x >= nx_ || y >= ny_ || z >= nz_) throw std::out_of_range("VolumeGeometry: voxel outside");
-  const uint32_t brick = (x >> 4) + bricks_x_ * ((y >> 4) + bricks_y_ * (z >> 3));
-  return {voxel_bank(x, y), 512 * brick + 64 * (z & 7) + 8 * ((y >> 1) & 7) + ((x >> 1) & 7)};
+  const uint32_t brick = (x >> 4) + bricks_x_ * ((y >> 3) + bricks_y_ * (z >> 4));
+  return {voxel_bank(x, y), 512 * brick + 32 * (z & 15) + 8 * ((y >> 1) & 3) + ((x >> 1) & 7)};
 }
 
 }  // namespace tmu::volume
