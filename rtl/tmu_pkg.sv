@@ -445,7 +445,7 @@ package tmu_pkg;
   // detail map: the levels below level 0, lambda = -1 .. -4
   localparam int unsigned DetailLevels = 4;
 
-  // volume: the cells of a brick in a bank (8 x 8 x 8), one DRAM page
+  // volume: the cells of a brick in a bank (8 x 4 x 16: 16 x 8 x 16 voxels), one DRAM page
   localparam int unsigned VolumeBrickCells = 512;
 
   // detail map: the largest side is 2^8 = 256 texels (8-bit offsets)
