@@ -365,22 +365,32 @@ TEST(VolumeUnitTest, GoldenIsTheIdealAtItsWeightsRoundedOnce) {
 
 // Against the ideal at the exact position: the rounding (1/2 a value, 1/32 of a gradient: half
 // an SQ9.4 unit) plus the weights' truncation, less than 2^-W per axis, times the largest change
-// along that axis over the cell's four edges (the interpolant is linear along each axis).
+// along that axis over the cell's four edges (the interpolant is linear along each axis); on
+// random rays.
 TEST(VolumeUnitTest, GoldenWithinItsBoundOfTheIdeal) {
   const VoxelGrid g = random_grid(16, 16, 16, 7);
   const VolumeMemory mem = load(g);
   std::mt19937_64 rng(8);
   std::cout << "seed 8\n";
-  std::uniform_real_distribution<double> s(0, 15);
+  std::uniform_real_distribution<double> s(0, 15), d(-0.6, 0.6);
   double worst_v = 0, worst_g = 0, max_v = 0, max_g = 0;
+  Ray ray;
   for (int w : {8, 6}) {
     for (int i = 0; i < 20000; ++i) {
-      const Position p = {quantise(s(rng)), quantise(s(rng)), quantise(s(rng))};
+      // Random rays (some leave the volume), 50 locations each; the ideal's location is its
+      // own start + n step of the quantised ray.
+      if (i % 50 == 0) {
+        ray = {{quantise(s(rng)), quantise(s(rng)), quantise(s(rng))},
+               {quantise(d(rng)), quantise(d(rng)), quantise(d(rng))},
+               50};
+      }
+      const Position p = march(ray)[size_t(i % 50)];
       const Resample r = resample(mem, {Mode::kRaw, w}, p);
+      const IdealResample id =
+          ideal_resample(g, ideal_location(to_point(ray.start), to_point(ray.step), i % 50));
       const Point x = to_point(p);
-      const IdealResample id = ideal_resample(g, x);
       long i0[3];
-      for (size_t a = 0; a < 3; ++a) i0[a] = std::min(long(x[a]), 14L);
+      for (size_t a = 0; a < 3; ++a) i0[a] = std::min(long(std::clamp(x[a], 0.0, 15.0)), 14L);
       // The largest change along each axis over the cell's edges, of f and of each gradient
       // component.
       double dv[3] = {0, 0, 0}, dg[3][3] = {};
