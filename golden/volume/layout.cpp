@@ -5,8 +5,12 @@
 
 #include "formats/constants.hpp"
 #include "formats/formats.hpp"
+#include "texram/page_model.hpp"
 
 namespace tmu::volume {
+
+static_assert(formats::kVolumeBrickCells == 8 * 4 * 16 &&
+              formats::kVolumeBrickCells == 1 << texram::kPageBits);
 
 VolumeGeometry::VolumeGeometry(uint32_t nx, uint32_t ny, uint32_t nz) : nx_(nx), ny_(ny), nz_(nz) {
   for (uint32_t n : {nx, ny, nz}) {
@@ -17,7 +21,8 @@ VolumeGeometry::VolumeGeometry(uint32_t nx, uint32_t ny, uint32_t nz) : nx_(nx),
   }
   bricks_x_ = (nx + 15) / 16;
   bricks_y_ = (ny + 7) / 8;
-  const uint64_t cells = uint64_t{bricks_x_} * bricks_y_ * ((nz + 15) / 16) * 512;
+  const uint64_t cells =
+      uint64_t{bricks_x_} * bricks_y_ * ((nz + 15) / 16) * formats::kVolumeBrickCells;
   if (cells > (uint64_t{1} << formats::kBankAddr.width())) {
     throw std::invalid_argument("VolumeGeometry: " + std::to_string(nx) + " x " +
                                 std::to_string(ny) + " x " + std::to_string(nz) +
