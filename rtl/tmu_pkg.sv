@@ -340,6 +340,36 @@ package tmu_pkg;
   localparam int unsigned DrfOpFrac = 0;
   typedef logic [DrfOpW-1:0] drf_op_t;
 
+  // VoxelPos: SQ10.16, volume: a resample coordinate in voxels, voxel centres at integers (the marcher's 26-bit accumulator)
+  localparam int unsigned VoxelPosW = 26;
+  localparam int unsigned VoxelPosFrac = 16;
+  typedef logic signed [VoxelPosW-1:0] voxel_pos_t;
+
+  // VoxelStep: SQ4.16, volume: a ray's step per resample, voxels, |step| < 8
+  localparam int unsigned VoxelStepW = 20;
+  localparam int unsigned VoxelStepFrac = 16;
+  typedef logic signed [VoxelStepW-1:0] voxel_step_t;
+
+  // VoxelCount: UQ16.0, volume: resample locations of a ray, 0..65535
+  localparam int unsigned VoxelCountW = 16;
+  localparam int unsigned VoxelCountFrac = 0;
+  typedef logic [VoxelCountW-1:0] voxel_count_t;
+
+  // VolumeSize: UQ10.0, volume: voxels along an axis, 2..512
+  localparam int unsigned VolumeSizeW = 10;
+  localparam int unsigned VolumeSizeFrac = 0;
+  typedef logic [VolumeSizeW-1:0] volume_size_t;
+
+  // VolumeMode: UQ1.0, volume: 0 value (an RGBA component, two accesses), 1 raw (value and gradient, eight)
+  localparam int unsigned VolumeModeW = 1;
+  localparam int unsigned VolumeModeFrac = 0;
+  typedef logic [VolumeModeW-1:0] volume_mode_t;
+
+  // VolumeGrad: SQ9.4, volume: a gradient component in voxel values per voxel (central differences / 2, interpolated)
+  localparam int unsigned VolumeGradW = 13;
+  localparam int unsigned VolumeGradFrac = 4;
+  typedef logic signed [VolumeGradW-1:0] volume_grad_t;
+
   // largest texture side in texels
   localparam int unsigned MaxTexSize = 4096;
 
@@ -414,6 +444,9 @@ package tmu_pkg;
 
   // detail map: the levels below level 0, lambda = -1 .. -4
   localparam int unsigned DetailLevels = 4;
+
+  // volume: the cells of a brick in a bank (8 x 4 x 16: 16 x 8 x 16 voxels), one DRAM page
+  localparam int unsigned VolumeBrickCells = 512;
 
   // detail map: the largest side is 2^8 = 256 texels (8-bit offsets)
   localparam int unsigned MaxDetailLog2 = 8;

@@ -29,6 +29,7 @@ definitions=(
   texram/detail_definition.hpp        # the detail map's combine rules and shape (16 x 16 regions, 4 levels)
   footprint/q_rule.hpp                # which measure of the footprint's width q
   tau/tau_definition.hpp              # the tau grid's shape, the interpolations' names, the extrapolation rule
+  volume/voxels.hpp                   # the volume data set container (8-bit voxels, x fastest)
 )
 
 listed() {  # is $1 one of the remaining arguments

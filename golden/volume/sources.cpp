@@ -1,0 +1,54 @@
+#include "volume/sources.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace tmu::volume {
+
+namespace {
+
+uint8_t to_voxel(double v) {
+  return static_cast<uint8_t>(std::clamp(std::floor(v + 0.5), 0.0, 255.0));
+}
+
+}  // namespace
+
+double marschner_lobb(double x, double y, double z) {
+  constexpr double kPi = std::numbers::pi, kFm = 6.0, kAlpha = 0.25;
+  const double r = std::sqrt(x * x + y * y);
+  const double rho = std::cos(2 * kPi * kFm * std::cos(kPi * r / 2));
+  return (1 - std::sin(kPi * z / 2) + kAlpha * (1 + rho)) / (2 * (1 + kAlpha));
+}
+
+VoxelGrid marschner_lobb_grid(uint32_t n) {
+  VoxelGrid g(n, n, n);
+  auto c = [n](uint32_t i) { return -1.0 + 2.0 * i / (n - 1); };
+  for (uint32_t k = 0; k < n; ++k) {
+    for (uint32_t j = 0; j < n; ++j) {
+      for (uint32_t i = 0; i < n; ++i)
+        g.at(i, j, k) = to_voxel(255 * marschner_lobb(c(i), c(j), c(k)));
+    }
+  }
+  return g;
+}
+
+std::array<double, 3> sphere_centre(const VoxelGrid& g) {
+  return {(g.nx - 1) / 2.0, (g.ny - 1) / 2.0, (g.nz - 1) / 2.0};
+}
+
+VoxelGrid sphere_grid(uint32_t nx, uint32_t ny, uint32_t nz, double radius, double slope) {
+  VoxelGrid g(nx, ny, nz);
+  const auto c = sphere_centre(g);
+  for (uint32_t k = 0; k < nz; ++k) {
+    for (uint32_t j = 0; j < ny; ++j) {
+      for (uint32_t i = 0; i < nx; ++i) {
+        const double d = std::hypot(i - c[0], j - c[1], k - c[2]);
+        g.at(i, j, k) = to_voxel(128 + slope * (radius - d));
+      }
+    }
+  }
+  return g;
+}
+
+}  // namespace tmu::volume
