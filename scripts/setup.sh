@@ -16,6 +16,7 @@ PACKAGES=(
   yosys berkeley-abc                                 # synthesis check, cell counts
   gtkwave                                            # viewing mismatch waveforms
   python3 python3-matplotlib python3-numpy           # plots
+  python3-scipy                                      # the volume unit's independent reference
   slurm-wlm munge                                    # texsim regress --slurm and its test
 )
 
