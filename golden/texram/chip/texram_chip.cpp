@@ -13,6 +13,17 @@ Geometry drf_geometry(const Drf& d) {
   return Geometry(d.log2_w, d.log2_h, four ? 4 : 1, k == TexelKind::kCcc);
 }
 
+int pixel_parameters(const DrfFile& file, int lead) {
+  int params = 1;
+  int number = lead & 7;
+  for (int step = 0; number != 0 && step < kMaxSteps; ++step) {  // pixel()'s walk
+    const Drf& d = file[static_cast<size_t>(number - 1)];
+    if (step > 0 && d.takes_coords) ++params;
+    number = d.link;
+  }
+  return params;
+}
+
 uint32_t TexramChip::sample(int number, const Drf& d, const PixelParameter& p, uint32_t shade) {
   const Geometry g = drf_geometry(d);
   const uint32_t base = d.cube ? d.face_base[static_cast<size_t>(p.face % kCubeFaces)] : d.base;
@@ -33,6 +44,7 @@ uint32_t TexramChip::sample(int number, const Drf& d, const PixelParameter& p, u
     pages_.access(a.address);
     accesses_.push_back(a);
   }
+  stats_.pages = pages_.stats();  // stats() reports the page model's counts
   std::array<std::array<uint32_t, 4>, 2> colours{};
   for (int j = 0; j < plan.levels_read; ++j) {
     for (int k = 0; k < plan.taps_per_level; ++k) {
