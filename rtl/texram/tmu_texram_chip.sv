@@ -29,10 +29,10 @@
 ///   StWait     its sample, applied by the op (an emit waits for the output register)
 ///   StFinish   the colour: into the output register, or into tmu_specular_combine
 ///   StCombine  tmu_specular_combine's result into the output register
-/// Cycles per step with page hits, the output free: Check 1, Issue 1, the trilinear unit's
-/// latency (12 from acceptance to its output for one byte plane; 4-plane maps 3 more, a page
-/// fault 1 more each), the sample taken in Wait: 15 for a one-plane map. A pixel adds Idle 1 and
-/// Finish 1 (with an environment: 3 more for the combine).
+/// Cycles per step with page hits, the output free: Check 1, Issue 1 and the trilinear unit's
+/// 12 from acceptance to its output (taken in Wait): 14 for a one-plane map, 17 for four byte
+/// planes, 1 more per page fault. A pixel adds 3 (Idle, the last Check, Finish), 2 more when
+/// an environment sends its colour through the combine (tests/blocks/texram_chip_test.cpp).
 ///
 /// The DRF and CLUT write ports are ready only in StIdle: no pixel is between the parameter
 /// port and the output (the colour may still wait in the output register), so a write never

@@ -17,12 +17,16 @@ using texram::chip::DrfOp;
 using texram::chip::PixelParameter;
 
 // The rtl's cycles per pixel: per step on a one-plane map at page hits, and per pixel besides.
-constexpr uint64_t kChipCyclesPerStep1 = 15;
-constexpr uint64_t kChipCyclesPerPixel = 4;
+constexpr uint64_t kChipCyclesPerStep1 = 14;
+constexpr uint64_t kChipCyclesPerPixel = 3;
+// An environment sampled: the colour through tmu_specular_combine.
+constexpr uint64_t kChipCyclesCombine = 2;
 
-// A chain of `length` DRFs 1 -> 2 -> ... on map `m` (nearest, wrap, texture op, no new
-// coordinates), and `pixels` pixels led by DRF 1 at one texel (page hits after the first).
-std::vector<Txn> chain_items(const ChipMapPlacement& m, int length, int pixels) {
+// A chain of `length` DRFs 1 -> 2 -> ... on map `m` (nearest, wrap, texture ops, the last
+// `last`, no new coordinates), and `pixels` pixels led by DRF 1 at one texel (page hits after
+// the first).
+std::vector<Txn> chain_items(const ChipMapPlacement& m, int length, int pixels,
+                             DrfOp last = DrfOp::kTexture) {
   DrfFile file{};
   for (int n = 1; n <= length; ++n) {
     Drf& d = file[static_cast<size_t>(n - 1)];
@@ -33,7 +37,7 @@ std::vector<Txn> chain_items(const ChipMapPlacement& m, int length, int pixels) 
     d.sampler.filter = texram::Filter::kNearest;
     d.sampler.border_u = d.sampler.border_v = texram::Border::kWrap;
     d.sampler.addressing = texram::Addressing::kTexel;
-    d.op = DrfOp::kTexture;
+    d.op = n < length ? DrfOp::kTexture : last;
     d.link = n < length ? n + 1 : 0;
   }
   std::vector<Txn> items;
@@ -49,10 +53,11 @@ std::vector<Txn> chain_items(const ChipMapPlacement& m, int length, int pixels) 
   return items;
 }
 
-// Cycles between colours, back to back without stalls, all page hits: 4 + 15 per step for a
-// one-plane map (Idle, Finish, 2 to refill; per step Check, Issue, the trilinear unit's 12 to
-// its output, Wait), 3 more per step for four byte planes. The hls model is sequential too
-// (its timing is its own).
+// Cycles between colours, back to back without stalls, all page hits: 3 + 14 per step for a
+// one-plane map (per pixel Idle, the last Check, Finish; per step Check, Issue and the
+// trilinear unit's 12 from acceptance to its output, taken in Wait), 3 more per step for four
+// byte planes, 2 more when an environment makes the colour go through the combine. The hls
+// model is sequential too (its timing is its own).
 TEST(TexramChipTest, CyclesPerStep) {
   const TexramChipBlock block({});
   const ChipScene& s = block.scene();
@@ -64,16 +69,20 @@ TEST(TexramChipTest, CyclesPerStep) {
       one = one ? one : &m;
   }
   ASSERT_NE(one, nullptr);
-  for (const auto& [map, per_step] : {std::pair{one, kChipCyclesPerStep1},
-                                      std::pair{four, kChipCyclesPerStep1 + 3}}) {
+  for (const auto& [map, per_step] :
+       {std::pair{one, kChipCyclesPerStep1}, std::pair{four, kChipCyclesPerStep1 + 3}}) {
     for (int length : {1, 2, 7}) {
-      const RunResult r = block.engine("rtl")->run(chain_items(*map, length, 20), RunOptions{});
-      ASSERT_TRUE(r.error.empty()) << r.error;
-      ASSERT_EQ(r.output_cycles.size(), 20u);
-      for (size_t k = 2; k < r.output_cycles.size(); ++k) {
-        EXPECT_EQ(r.output_cycles[k] - r.output_cycles[k - 1],
-                  kChipCyclesPerPixel + static_cast<uint64_t>(length) * per_step)
-            << "length " << length << ", output " << k;
+      for (const DrfOp last : {DrfOp::kTexture, DrfOp::kEnvironment}) {
+        const RunResult r =
+            block.engine("rtl")->run(chain_items(*map, length, 20, last), RunOptions{});
+        ASSERT_TRUE(r.error.empty()) << r.error;
+        ASSERT_EQ(r.output_cycles.size(), 20u);
+        const uint64_t combine = last == DrfOp::kEnvironment ? kChipCyclesCombine : 0;
+        for (size_t k = 2; k < r.output_cycles.size(); ++k) {
+          EXPECT_EQ(r.output_cycles[k] - r.output_cycles[k - 1],
+                    kChipCyclesPerPixel + static_cast<uint64_t>(length) * per_step + combine)
+              << "length " << length << ", op " << name(last) << ", output " << k;
+        }
       }
     }
   }
