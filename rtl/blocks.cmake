@@ -500,6 +500,9 @@ tmu_mutant(texram_chip link FILE texram/tmu_texram_chip.sv
 tmu_mutant(texram_chip reflectance FILE texram/tmu_texram_chip.sv
   FROM "if (!have_refl_q) refl_d = constant_rgba;" TO "refl_d = constant_rgba;"
   WHY "an environment DRF's constant replaces a reflectance map's R (eq. 7 with the wrong R)")
+tmu_mutant(texram_chip reset FILE texram/tmu_texram_drf_file.sv
+  FROM "shape_q[n]    <= ShapeReset;" TO "shape_q[n]    <= '0;"
+  WHY "the DRFs reset with filter nearest, not golden's trilinear: the pixels before the first program read other banks")
 tmu_mutant(texram_chip unreset FILE texram/tmu_texram_chip.sv EXPECT x-leak
   FROM "      pixels_q    <= '0;\n" TO ""
   WHY "the pixel counter starts where its flops happen to be")

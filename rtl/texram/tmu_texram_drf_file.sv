@@ -13,8 +13,9 @@
 ///
 /// The read port shows DRF rd_drf_i's fields decoded (combinational), and the map's base: the
 /// base, or with the cube bit the face rd_face_i's base (a face taken modulo 6; DRFs 1..6 hold
-/// no faces, so theirs is 0, as golden's zero-initialised face_base). Every register resets to
-/// 0, golden's DrfFile{} fields as the host never leaves them.
+/// no faces, so theirs is 0, as golden's zero-initialised face_base). The registers reset to
+/// golden's DrfFile{}: every field 0 but the filter, trilinear (SamplerConfig's default), so a
+/// pixel before any write is golden's too.
 module tmu_texram_drf_file (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -51,6 +52,8 @@ module tmu_texram_drf_file (
   localparam int unsigned BaseW    = tmu_pkg::BankAddrW;
   localparam int unsigned ShapeW   = 21;
   localparam int unsigned ControlW = 9;
+  // pack_shape(Drf{}): filter trilinear (2 at bits 14:13), every other field 0.
+  localparam logic [ShapeW-1:0] ShapeReset = ShapeW'(2) << 13;
 
   localparam tmu_pkg::drf_field_t FieldBase     = 4'd0;
   localparam tmu_pkg::drf_field_t FieldShape    = 4'd1;
@@ -75,7 +78,7 @@ module tmu_texram_drf_file (
     if (!rst_ni) begin
       for (int n = 0; n < Drfs; n++) begin
         base_q[n]     <= '0;
-        shape_q[n]    <= '0;
+        shape_q[n]    <= ShapeReset;
         border_q[n]   <= '0;
         constant_q[n] <= '0;
         control_q[n]  <= '0;

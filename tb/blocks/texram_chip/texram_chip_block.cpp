@@ -351,6 +351,14 @@ std::vector<Txn> TexramChipBlock::setup_items() const {
   for (size_t i = 0; i < scene_->clut.size(); ++i) {
     items.push_back(chip_clut_item(static_cast<uint8_t>(i), scene_->clut[i]));
   }
+  // Pixels before any DRF is written: the DRFs as reset (golden's DrfFile{}: a 1 x 1
+  // luminance map at base 0, trilinear, texture, link 0).
+  for (int lead : {1, 7}) {
+    PixelParameter p;
+    p.lead = lead;
+    p.request = {kOne / 2, kOne / 2, 0, 0x8040'20FFu};
+    items.push_back(chip_param_item(p));
+  }
   for (const Txn& t : chip_program_items(first_.file)) items.push_back(t);
   return items;
 }

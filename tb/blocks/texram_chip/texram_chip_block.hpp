@@ -10,11 +10,12 @@
 //
 // The environment, drawn from the seed and fixed for the block: one chip memory with a few
 // maps of random kinds and sizes (the trilinear block's textures) at page-aligned bases without
-// overlap, and a cube map's six faces; the chip's one CLUT. The stimulus loads the CLUT and a
-// first DRF program; directed items visit every op, an emit DRF, every cube face, a 7-step
-// chain, writes presented while a pixel is in flight, lambda at its extremes and a link cycle
-// (the step limit, last: the flag is sticky); a random run writes a new random valid program
-// (chains of 1..7 DRFs, a cube map in DRF 7 sometimes) every few hundred pixels.
+// overlap, and a cube map's six faces; the chip's one CLUT. The stimulus loads the CLUT, runs
+// two pixels on the DRFs as reset and loads a first DRF program; directed items visit every op, an
+// emit DRF, every cube face, a 7-step chain, writes presented while a pixel is in flight, lambda at
+// its extremes and a link cycle (the step limit, last: the flag is sticky); a random run writes a
+// new random valid program (chains of 1..7 DRFs, a cube map in DRF 7 sometimes) every few hundred
+// pixels.
 #pragma once
 
 #include <array>
