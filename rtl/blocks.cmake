@@ -487,4 +487,24 @@ tmu_mutant(tau unreset FILE tau/tmu_tau.sv EXPECT x-leak
   FROM "      state_q     <= Idle;\n" TO ""
   WHY "the state starts where its flops happen to be (a random step of a sample that never came)")
 
+
+# The TEXRAM chip (000 §14): seven linked DRFs, the trilinear unit on each map at its base,
+# eq. 6-7 per pixel (`texsim cosim texram_chip`; docs/texram_chip.md "The chip block").
+tmu_block(texram_chip)
+tmu_mutant(texram_chip base FILE texram/tmu_texram_chip.sv
+  FROM "tri_addr[b*AddrW +: AddrW] + base" TO "tri_addr[b*AddrW +: AddrW]"
+  WHY "the map's base is not added: every map is read at cell 0 of the banks (wrong requests and colours)")
+tmu_mutant(texram_chip link FILE texram/tmu_texram_chip.sv
+  FROM "num_d   = link;" TO "num_d   = '0;"
+  WHY "the link is ignored: every chain ends after its leading DRF (missing parameters deadlock, colours wrong)")
+tmu_mutant(texram_chip reflectance FILE texram/tmu_texram_chip.sv
+  FROM "if (!have_refl_q) refl_d = constant_rgba;" TO "refl_d = constant_rgba;"
+  WHY "an environment DRF's constant replaces a reflectance map's R (eq. 7 with the wrong R)")
+tmu_mutant(texram_chip reset FILE texram/tmu_texram_drf_file.sv
+  FROM "shape_q[n]    <= ShapeReset;" TO "shape_q[n]    <= '0;"
+  WHY "the DRFs reset with filter nearest, not golden's trilinear: the pixels before the first program read other banks")
+tmu_mutant(texram_chip unreset FILE texram/tmu_texram_chip.sv EXPECT x-leak
+  FROM "      pixels_q    <= '0;\n" TO ""
+  WHY "the pixel counter starts where its flops happen to be")
+
 tmu_write_block_tables()

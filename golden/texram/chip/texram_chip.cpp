@@ -16,6 +16,24 @@ Geometry drf_geometry(const Drf& d) {
   return Geometry(d.log2_w, d.log2_h, four ? 4 : 1, k == TexelKind::kCcc);
 }
 
+int pixel_parameters(const DrfFile& file, int lead) {
+  int params = 1;
+  int number = lead & 7;
+  for (int step = 0; number != 0 && step < kMaxSteps; ++step) {  // pixel()'s walk
+    const Drf& d = file[static_cast<size_t>(number - 1)];
+    if (step > 0 && d.takes_coords) ++params;
+    number = d.link;
+    if (d.detail && number != 0) {  // its offsets and detail DRFs
+      const int detail_number = file[static_cast<size_t>(number - 1)].link;
+      if (detail_number != 0) {
+        number = file[static_cast<size_t>(detail_number - 1)].link;
+        step += 2;
+      }
+    }
+  }
+  return params;
+}
+
 uint32_t TexramChip::sample(int number, const Drf& d, const PixelParameter& p,
                             const Request& request) {
   return read(number, d, d.cube ? d.face_base[static_cast<size_t>(p.face % kCubeFaces)] : d.base,

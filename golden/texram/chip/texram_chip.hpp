@@ -95,6 +95,11 @@ class TexramChip {
   std::vector<ChipAccess> accesses_;
 };
 
+// The parameter transactions a pixel led by `lead` takes under `file`: its first, and one per
+// takes_coords DRF that pixel() reaches after it (step limit included). What a driver (and the
+// co-simulation block) sends for one pixel.
+int pixel_parameters(const DrfFile& file, int lead);
+
 // The planes (accesses per sample) and the block grid a DRF's kind implies.
 Geometry drf_geometry(const Drf& d);
 

@@ -1,0 +1,448 @@
+/// The TEXRAM chip (000 §14; docs/texram_chip.md "The chip block"), bit-exact with the golden
+/// sequencer texram::chip::TexramChip (golden/texram/chip/texram_chip.cpp, the specification):
+/// seven linked description register files (tmu_texram_drf_file) over one shared memory, the
+/// trilinear unit (tmu_trilinear) as the datapath of every map, eq. 6-7 in
+/// tmu_specular_combine.
+///
+/// A pixel's first parameter names its leading DRF. For each DRF of its chain the sequencer
+/// takes the pixel's next parameter first where the DRF says takes_coords (not for the first
+/// DRF, whose parameter is the first), samples the DRF's map with the trilinear unit (its cfg_*
+/// from the DRF; every memory address the unit issues gets the map's base added: the base, or
+/// the cube face's base for DRF 7's cube map, the face taken modulo 6), and does the DRF's op
+/// with the sample:
+///   texture      C_d = the sample (eq. 5 inside the trilinear unit, with the pixel's I_d)
+///   shading      I_d = the sample (and a later parameter's shade no longer replaces it)
+///   reflectance  R = the sample
+///   environment  E = the sample; R = the DRF's constant unless a reflectance map gave it
+///   emit         the sample leaves on out at once, last = 0
+/// then follows the link (0 ends the chain). The colour leaves last = 1: C_d, or
+/// specular_combine(C_d, E, R) once an environment was sampled. After 7 accesses the pixel ends
+/// where it is and stat_step_limit_o is set (sticky).
+///
+/// One sample in flight at a time: the trilinear unit documents its configuration as
+/// quasi-static, so cfg_* (the current DRF's fields) change only while it is empty. States:
+///   StIdle     drf and clut writes and a pixel's first parameter are taken
+///   StCheck    the DRF number: 0 ends, the 8th step ends with the limit, a takes_coords DRF
+///              (not the first) waits for a parameter, else the access
+///   StParam    the pixel's next parameter
+///   StIssue    the request to the trilinear unit
+///   StWait     its sample, applied by the op (an emit waits for the output register)
+///   StFinish   the colour: into the output register, or into tmu_specular_combine
+///   StCombine  tmu_specular_combine's result into the output register
+/// Cycles per step with page hits, the output free: Check 1, Issue 1 and the trilinear unit's
+/// 12 from acceptance to its output (taken in Wait): 14 for a one-plane map, 17 for four byte
+/// planes, 1 more per page fault. A pixel adds 3 (Idle, the last Check, Finish), 2 more when
+/// an environment sends its colour through the combine (tests/blocks/texram_chip_test.cpp).
+///
+/// The DRF and CLUT write ports are ready only in StIdle: no pixel is between the parameter
+/// port and the output (the colour may still wait in the output register), so a write never
+/// changes the program or the palette under a pixel; a write and a first parameter accepted
+/// at the same edge take effect in that order.
+module tmu_texram_chip (
+  input  logic                       clk_i,
+  input  logic                       rst_ni,
+
+  /// DRF write: DRF drf_drf_i's field drf_field_i <= drf_value_i (tmu_texram_drf_file).
+  input  logic                       drf_valid_i,
+  output logic                       drf_ready_o,
+  input  tmu_pkg::drf_index_t        drf_drf_i,
+  input  tmu_pkg::drf_field_t        drf_field_i,
+  input  tmu_pkg::drf_value_t        drf_value_i,
+
+  /// CLUT write (the chip's one palette, the trilinear unit's CLUT).
+  input  logic                       clut_valid_i,
+  output logic                       clut_ready_o,
+  input  tmu_pkg::clut_index_t       clut_addr_i,
+  input  tmu_pkg::rgba8888_t         clut_rgba_i,
+
+  /// A pixel's parameter: the first names the leading DRF (param_lead_i; read from the first
+  /// only); (u, v) texels of level 0 or a sphere map's (uN, vN), lambda, the shade I_d, the
+  /// cube face.
+  input  logic                       param_valid_i,
+  output logic                       param_ready_o,
+  input  tmu_pkg::drf_index_t        param_lead_i,
+  input  tmu_pkg::tex_coord_t        param_u_i,
+  input  tmu_pkg::tex_coord_t        param_v_i,
+  input  tmu_pkg::lod_t              param_lambda_i,
+  input  tmu_pkg::rgba8888_t         param_shade_i,
+  input  tmu_pkg::cube_face_t        param_face_i,
+
+  /// Memory access: the banks to read and their absolute addresses (base + the map's cell; 0
+  /// where not read) ...
+  output logic                       mem_req_valid_o,
+  input  logic                       mem_req_ready_i,
+  output logic [tmu_pkg::Banks-1:0]  mem_req_en_o,
+  output logic [tmu_pkg::Banks*tmu_pkg::BankAddrW-1:0] mem_req_addr_o,
+  /// ... and its response, in request order, no ready: bank b's byte at [8 b +: 8].
+  input  logic                       mem_resp_valid_i,
+  input  logic [tmu_pkg::Banks*8-1:0] mem_resp_data_i,
+
+  /// An emitted sample (last 0) or the pixel's colour (last 1).
+  output logic                       out_valid_o,
+  input  logic                       out_ready_i,
+  output tmu_pkg::rgba8888_t         out_rgba_o,
+  output tmu_pkg::flag_t             out_last_o,
+
+  /// Pixels, parameters taken, steps (map samples); step_limit: sticky.
+  output tmu_pkg::stat_count_t       stat_pixels_o,
+  output tmu_pkg::stat_count_t       stat_parameters_o,
+  output tmu_pkg::stat_count_t       stat_steps_o,
+  output tmu_pkg::flag_t             stat_step_limit_o
+);
+
+  localparam int unsigned Banks    = tmu_pkg::Banks;
+  localparam int unsigned AddrW    = tmu_pkg::BankAddrW;
+  localparam int unsigned MaxSteps = tmu_pkg::Drfs;  // 7 accesses per pixel
+
+  // The ops (golden DrfOp); 5..7 do nothing.
+  localparam logic [2:0] OpTexture     = 3'd0;
+  localparam logic [2:0] OpShading     = 3'd1;
+  localparam logic [2:0] OpReflectance = 3'd2;
+  localparam logic [2:0] OpEnvironment = 3'd3;
+  localparam logic [2:0] OpEmit        = 3'd4;
+
+  typedef enum logic [2:0] {
+    StIdle,
+    StCheck,
+    StParam,
+    StIssue,
+    StWait,
+    StFinish,
+    StCombine
+  } state_e;
+
+  // ---- Registers -----------------------------------------------------------------------------
+
+  state_e                 state_q, state_d;
+  tmu_pkg::drf_index_t    num_q, num_d;    // the current DRF (0: the chain has ended)
+  logic [2:0]             step_q, step_d;  // accesses so far, 0..7
+  tmu_pkg::tex_coord_t    u_q, u_d, v_q, v_d;
+  tmu_pkg::lod_t          lambda_q, lambda_d;
+  tmu_pkg::cube_face_t    face_q, face_d;
+  tmu_pkg::rgba8888_t     shade_q, shade_d;      // I_d
+  tmu_pkg::rgba8888_t     colour_q, colour_d;    // C_d
+  tmu_pkg::rgba8888_t     refl_q, refl_d;        // R
+  tmu_pkg::rgba8888_t     env_q, env_d;          // E
+  logic                   have_refl_q, have_refl_d, have_env_q, have_env_d;
+  logic                   shaded_q, shaded_d;    // I_d from a shading map
+  logic                   out_valid_q, out_valid_d;
+  tmu_pkg::rgba8888_t     out_rgba_q, out_rgba_d;
+  logic                   out_last_q, out_last_d;
+  tmu_pkg::stat_count_t   pixels_q, pixels_d, params_q, params_d, steps_q, steps_d;
+  logic                   limit_q, limit_d;
+
+  // ---- The DRF file --------------------------------------------------------------------------
+
+  logic drf_fire, clut_fire, param_fire;
+  tmu_pkg::bank_addr_t     base;
+  tmu_pkg::mip_log2_t      log2_w, log2_h;
+  tmu_pkg::tex_kind_t      kind;
+  tmu_pkg::byte_plane_t    single_channel;
+  tmu_pkg::tex_filter_t    filter;
+  tmu_pkg::tex_border_t    border_u, border_v;
+  tmu_pkg::tex_addressing_t addressing;
+  tmu_pkg::rgba8888_t      border_rgba, constant_rgba;
+  tmu_pkg::drf_op_t        op;
+  tmu_pkg::drf_index_t     link;
+  logic                    takes_coords;
+  tmu_pkg::tex_combine_t   combine;
+
+  tmu_texram_drf_file u_drf_file (
+    .clk_i, .rst_ni,
+    .wr_en_i            (drf_fire),
+    .wr_drf_i           (drf_drf_i),
+    .wr_field_i         (drf_field_i),
+    .wr_value_i         (drf_value_i),
+    .rd_drf_i           (num_q),
+    .rd_face_i          (face_q),
+    .rd_base_o          (base),
+    .rd_log2_w_o        (log2_w),
+    .rd_log2_h_o        (log2_h),
+    .rd_kind_o          (kind),
+    .rd_single_channel_o(single_channel),
+    .rd_filter_o        (filter),
+    .rd_border_u_o      (border_u),
+    .rd_border_v_o      (border_v),
+    .rd_addressing_o    (addressing),
+    .rd_border_rgba_o   (border_rgba),
+    .rd_constant_rgba_o (constant_rgba),
+    .rd_op_o            (op),
+    .rd_link_o          (link),
+    .rd_takes_coords_o  (takes_coords),
+    .rd_combine_o       (combine)
+  );
+
+  // ---- The datapath: the trilinear unit on the current DRF -----------------------------------
+
+  logic                     tri_req_valid, tri_req_ready, tri_clut_ready;
+  logic                     tri_out_valid, tri_out_ready;
+  tmu_pkg::rgba8888_t       tri_out_rgba;
+  logic [Banks*AddrW-1:0]   tri_addr;
+
+  tmu_trilinear u_trilinear (
+    .clk_i, .rst_ni,
+    .cfg_log2_w_i        (log2_w),
+    .cfg_log2_h_i        (log2_h),
+    .cfg_kind_i          (kind),
+    .cfg_single_channel_i(single_channel),
+    .cfg_filter_i        (filter),
+    .cfg_border_u_i      (border_u),
+    .cfg_border_v_i      (border_v),
+    .cfg_border_rgba_i   (border_rgba),
+    .cfg_combine_i       (combine),
+    .cfg_constant_rgba_i (constant_rgba),
+    .cfg_addressing_i    (addressing),
+    .clut_valid_i        (clut_valid_i && state_q == StIdle),
+    .clut_ready_o        (tri_clut_ready),
+    .clut_addr_i,
+    .clut_rgba_i,
+    .req_valid_i         (tri_req_valid),
+    .req_ready_o         (tri_req_ready),
+    .req_u_i             (u_q),
+    .req_v_i             (v_q),
+    .req_lambda_i        (lambda_q),
+    .req_shade_i         (shade_q),
+    .mem_req_valid_o,
+    .mem_req_ready_i,
+    .mem_req_en_o,
+    .mem_req_addr_o      (tri_addr),
+    .mem_resp_valid_i,
+    .mem_resp_data_i,
+    .out_valid_o         (tri_out_valid),
+    .out_ready_i         (tri_out_ready),
+    .out_rgba_o          (tri_out_rgba)
+  );
+
+  // The map's base on every bank it reads (the cube face's for a cube map); 0 where not read.
+  for (genvar b = 0; b < Banks; b++) begin : gen_addr
+    assign mem_req_addr_o[b*AddrW +: AddrW] =
+        mem_req_en_o[b] ? tri_addr[b*AddrW +: AddrW] + base : '0;
+  end
+
+  // ---- eq. 6-7: C = min(255, C_d + R E / 255) --------------------------------------------------
+
+  logic               spec_in_valid, spec_in_ready, spec_out_valid, spec_out_ready;
+  tmu_pkg::rgba8888_t spec_colour;
+
+  tmu_specular_combine u_specular_combine (
+    .clk_i, .rst_ni,
+    .in_valid_i      (spec_in_valid),
+    .in_ready_o      (spec_in_ready),
+    .in_diffuse_i    (colour_q),
+    .in_specular_i   (env_q),
+    .in_reflectance_i(refl_q),
+    .out_valid_o     (spec_out_valid),
+    .out_ready_i     (spec_out_ready),
+    .out_colour_o    (spec_colour)
+  );
+
+  // ---- Handshakes ----------------------------------------------------------------------------
+
+  logic out_free;  // the output register can load at this edge
+  assign out_free = !out_valid_q || out_ready_i;
+
+  assign drf_ready_o   = state_q == StIdle;
+  assign clut_ready_o  = state_q == StIdle && tri_clut_ready;
+  assign param_ready_o = state_q == StIdle || state_q == StParam;
+  assign drf_fire      = drf_valid_i && drf_ready_o;
+  assign clut_fire     = clut_valid_i && clut_ready_o;
+  assign param_fire    = param_valid_i && param_ready_o;
+
+  assign tri_req_valid  = state_q == StIssue;
+  assign tri_out_ready  = state_q == StWait && (op != OpEmit || out_free);
+  assign spec_in_valid  = state_q == StFinish && have_env_q;
+  assign spec_out_ready = state_q == StCombine && out_free;
+
+  // ---- The sequencer -------------------------------------------------------------------------
+
+  always_comb begin
+    state_d     = state_q;
+    num_d       = num_q;
+    step_d      = step_q;
+    u_d         = u_q;
+    v_d         = v_q;
+    lambda_d    = lambda_q;
+    face_d      = face_q;
+    shade_d     = shade_q;
+    colour_d    = colour_q;
+    refl_d      = refl_q;
+    env_d       = env_q;
+    have_refl_d = have_refl_q;
+    have_env_d  = have_env_q;
+    shaded_d    = shaded_q;
+    out_valid_d = out_valid_q && !out_ready_i;
+    out_rgba_d  = out_rgba_q;
+    out_last_d  = out_last_q;
+    pixels_d    = pixels_q;
+    params_d    = params_q;
+    steps_d     = steps_q;
+    limit_d     = limit_q;
+
+    if (param_fire) begin  // a parameter's coordinates (the first's shade and lead below)
+      u_d      = param_u_i;
+      v_d      = param_v_i;
+      lambda_d = param_lambda_i;
+      face_d   = param_face_i;
+      params_d = params_q + 1'b1;
+    end
+
+    unique case (state_q)
+      StIdle: begin
+        if (param_fire) begin
+          num_d       = param_lead_i;
+          step_d      = '0;
+          shade_d     = param_shade_i;
+          colour_d    = '0;
+          refl_d      = '0;
+          env_d       = '0;
+          have_refl_d = 1'b0;
+          have_env_d  = 1'b0;
+          shaded_d    = 1'b0;
+          pixels_d    = pixels_q + 1'b1;
+          state_d     = StCheck;
+        end
+      end
+      StCheck: begin
+        if (num_q == '0) begin
+          state_d = StFinish;
+        end else if (32'(step_q) == MaxSteps) begin
+          limit_d = 1'b1;
+          state_d = StFinish;
+        end else if (step_q != '0 && takes_coords) begin
+          state_d = StParam;
+        end else begin
+          state_d = StIssue;
+        end
+      end
+      StParam: begin
+        if (param_fire) begin
+          if (op == OpTexture && !shaded_q) shade_d = param_shade_i;
+          state_d = StIssue;
+        end
+      end
+      StIssue: begin
+        if (tri_req_ready) begin
+          steps_d = steps_q + 1'b1;
+          state_d = StWait;
+        end
+      end
+      StWait: begin
+        if (tri_out_valid && tri_out_ready) begin
+          unique case (op)
+            OpTexture: colour_d = tri_out_rgba;
+            OpShading: begin
+              shade_d  = tri_out_rgba;
+              shaded_d = 1'b1;
+            end
+            OpReflectance: begin
+              refl_d      = tri_out_rgba;
+              have_refl_d = 1'b1;
+            end
+            OpEnvironment: begin
+              env_d      = tri_out_rgba;
+              have_env_d = 1'b1;
+              if (!have_refl_q) refl_d = constant_rgba;
+            end
+            OpEmit: begin
+              out_valid_d = 1'b1;
+              out_rgba_d  = tri_out_rgba;
+              out_last_d  = 1'b0;
+            end
+            default: ;  // ops 5..7 do nothing
+          endcase
+          num_d   = link;
+          step_d  = step_q + 1'b1;
+          state_d = StCheck;
+        end
+      end
+      StFinish: begin
+        if (have_env_q) begin
+          if (spec_in_ready) state_d = StCombine;
+        end else if (out_free) begin
+          out_valid_d = 1'b1;
+          out_rgba_d  = colour_q;
+          out_last_d  = 1'b1;
+          state_d     = StIdle;
+        end
+      end
+      StCombine: begin
+        if (spec_out_valid && out_free) begin
+          out_valid_d = 1'b1;
+          out_rgba_d  = spec_colour;
+          out_last_d  = 1'b1;
+          state_d     = StIdle;
+        end
+      end
+      default: state_d = StIdle;
+    endcase
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      state_q     <= StIdle;
+      num_q       <= '0;
+      step_q      <= '0;
+      face_q      <= '0;
+      have_refl_q <= 1'b0;
+      have_env_q  <= 1'b0;
+      shaded_q    <= 1'b0;
+      out_valid_q <= 1'b0;
+      pixels_q    <= '0;
+      params_q    <= '0;
+      steps_q     <= '0;
+      limit_q     <= 1'b0;
+    end else begin
+      state_q     <= state_d;
+      num_q       <= num_d;
+      step_q      <= step_d;
+      face_q      <= face_d;
+      have_refl_q <= have_refl_d;
+      have_env_q  <= have_env_d;
+      shaded_q    <= shaded_d;
+      out_valid_q <= out_valid_d;
+      pixels_q    <= pixels_d;
+      params_q    <= params_d;
+      steps_q     <= steps_d;
+      limit_q     <= limit_d;
+    end
+  end
+
+  // The pixel's data: written before it is read (a pixel's first parameter loads them all).
+  always_ff @(posedge clk_i) begin
+    u_q        <= u_d;
+    v_q        <= v_d;
+    lambda_q   <= lambda_d;
+    shade_q    <= shade_d;
+    colour_q   <= colour_d;
+    refl_q     <= refl_d;
+    env_q      <= env_d;
+    out_rgba_q <= out_rgba_d;
+    out_last_q <= out_last_d;
+  end
+
+  assign out_valid_o       = out_valid_q;
+  assign out_rgba_o        = out_rgba_q;
+  assign out_last_o        = out_last_q;
+  assign stat_pixels_o     = pixels_q;
+  assign stat_parameters_o = params_q;
+  assign stat_steps_o      = steps_q;
+  assign stat_step_limit_o = limit_q;
+
+  // clut_fire only feeds the assertion below.
+  logic unused_clut_fire;
+  assign unused_clut_fire = clut_fire;
+
+`ifndef SYNTHESIS
+  // The trilinear unit's configuration changes only while it is empty: at most one sample in it.
+  property p_one_in_flight;
+    @(posedge clk_i) disable iff (!rst_ni) tri_req_valid && tri_req_ready |=> state_q == StWait;
+  endproperty
+  a_one_in_flight: assert property (p_one_in_flight);
+  // A write is taken only between pixels.
+  property p_write_idle;
+    @(posedge clk_i) disable iff (!rst_ni) (drf_fire || clut_fire) |-> state_q == StIdle;
+  endproperty
+  a_write_idle: assert property (p_write_idle);
+`endif
+
+endmodule
