@@ -1,0 +1,117 @@
+// Page-row buffers and the write arbiter of the video path (docs/video.md), a cycle model at
+// the memory clock: one access per cycle (30 ns, 000 §5), a page fault costs a second cycle.
+//
+// The mipmap generator's cell writes are collected per bank into row buffers, each holding one
+// aligned segment of `segment_cells` cells of one DRAM page (512 cells) and a mask of the cells
+// written. A buffer becomes ready when every cell of its segment is written, or when its frame
+// ends (flush). A ready buffer is written to its bank in one access (masked). The arbiter, each
+// cycle not taken by the second cycle of a faulting write:
+//   1. the oldest ready buffer (in order of becoming ready) whose frame is not held (the swap
+//      barrier, video_map.hpp) is written if the sampler does not want the cycle, or if it has
+//      waited `max_wait` (L) cycles or more: then it takes the cycle and the sampler loses it;
+//   2. otherwise the sampler, if it wants the cycle, gets it.
+// Pages: each bank keeps the page last written open; a sampler access is taken to close every
+// bank's page (pessimistic: the sampler reads other maps), so a write after a sampler access
+// faults. A cell write that finds no free buffer in its bank is lost and counted (the source
+// cannot be stalled); the sizing in docs/video.md makes that never happen at the stated rates,
+// and the tests assert it.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "texram/page_model.hpp"
+#include "texram/texture.hpp"
+
+namespace tmu::texram::video {
+
+struct ArbiterConfig {
+  uint32_t segment_cells = 512;  // a buffer: an aligned part of a page, a power of two 1..512
+  int buffers_per_bank = 12;     // row buffers of each bank (sized in docs/video.md)
+  uint32_t max_wait = 64;        // L: cycles a ready buffer waits for a free cycle at most
+  bool direct = false;           // no buffers: every cell written at once (the reference)
+};
+
+struct ArbiterStats {
+  uint64_t cycles = 0;
+  uint64_t sampler_wanted = 0;   // cycles the sampler wanted the memory
+  uint64_t sampler_granted = 0;  // ... and got it
+  uint64_t sampler_lost = 0;     // ... and did not (a write had it): wanted - granted
+  uint64_t write_accesses = 0;   // buffers written
+  uint64_t write_cycles = 0;     // cycles the writes took (accesses + page faults)
+  uint64_t page_faults = 0;      // write accesses that faulted
+  uint64_t cells_in = 0;         // cell writes collected
+  uint64_t cells_written = 0;    // cells the write accesses stored
+  uint64_t lost_writes = 0;      // cell writes that found no free buffer
+  uint64_t forced_writes = 0;    // writes that waited max_wait and took the sampler's cycle
+  uint64_t max_latency = 0;      // most cycles a buffer waited from ready to its access
+  uint64_t latency_sum = 0;      // for the mean: latency_sum / write_accesses
+  size_t max_ready = 0;          // most buffers ready at once
+  size_t max_busy_bank = 0;      // most buffers not free in one bank at once (high-water)
+  size_t max_busy_total = 0;     // most buffers not free in all banks at once
+  double mean_latency() const {
+    return write_accesses ? static_cast<double>(latency_sum) / static_cast<double>(write_accesses)
+                          : 0.0;
+  }
+};
+
+class RowBuffers {
+ public:
+  // `memory` is the chip's banks the writes go to. Throws std::invalid_argument for a segment
+  // that is not a power of two up to 512 or fewer than one buffer per bank.
+  RowBuffers(const ArbiterConfig& config, BankImage& memory);
+
+  const ArbiterConfig& config() const { return config_; }
+
+  // One cell write of frame `tag` (tags ascend frame by frame).
+  void put(unsigned bank, uint32_t address, uint8_t value, uint64_t tag);
+  // Frame `tag` ends: every buffer collecting its cells becomes ready.
+  void flush(uint64_t tag);
+  // The cell as the writes so far leave it: the newest buffer holding it, else the memory
+  // (the read back of the line above for interlaced field 2, 000 §12).
+  uint8_t read_back(unsigned bank, uint32_t address) const;
+  // Writes of frames with a tag above `tag` wait (the swap barrier); ~0 holds none.
+  void hold_after(uint64_t tag) { hold_after_ = tag; }
+  // Buffers holding cells of frame `tag`, in any state but free (0: all in memory).
+  size_t buffers_of(uint64_t tag) const;
+  size_t buffers_busy() const;
+  // No buffer ready or being written (collecting ones may remain).
+  bool idle() const { return ready_.empty() && busy_ == 0; }
+
+  // One memory cycle. Returns whether the sampler got the cycle (false when it did not want it).
+  bool cycle(bool sampler_wants);
+
+  const ArbiterStats& stats() const { return stats_; }
+
+ private:
+  enum class State : uint8_t { kFree, kCollecting, kReady, kWriting };
+  struct Buffer {
+    State state = State::kFree;
+    unsigned bank = 0;
+    uint32_t segment = 0;  // address / segment_cells
+    uint64_t tag = 0;
+    uint64_t ready_cycle = 0;
+    uint32_t count = 0;  // cells written
+    std::vector<uint8_t> data;
+    std::vector<bool> valid;
+  };
+  Buffer* collecting(unsigned bank, uint32_t segment, uint64_t tag);
+  void make_ready(size_t id);
+  void write_access(size_t id);
+  void note_busy();
+
+  ArbiterConfig config_;
+  BankImage& memory_;
+  std::vector<Buffer> buffers_;  // bank b's are b * buffers_per_bank ...
+  std::deque<size_t> ready_;     // in order of becoming ready
+  std::array<std::optional<uint32_t>, 8> open_page_{};
+  uint64_t hold_after_ = ~uint64_t{0};
+  size_t writing_ = 0;  // the buffer of a write in its second (page fault) cycle
+  int busy_ = 0;        // cycles left of that write
+  ArbiterStats stats_;
+};
+
+}  // namespace tmu::texram::video
