@@ -37,21 +37,22 @@ struct ArbiterConfig {
 
 struct ArbiterStats {
   uint64_t cycles = 0;
-  uint64_t sampler_wanted = 0;   // cycles the sampler wanted the memory
-  uint64_t sampler_granted = 0;  // ... and got it
-  uint64_t sampler_lost = 0;     // ... and did not (a write had it): wanted - granted
-  uint64_t write_accesses = 0;   // buffers written
-  uint64_t write_cycles = 0;     // cycles the writes took (accesses + page faults)
-  uint64_t page_faults = 0;      // write accesses that faulted
-  uint64_t cells_in = 0;         // cell writes collected
-  uint64_t cells_written = 0;    // cells the write accesses stored
-  uint64_t lost_writes = 0;      // cell writes that found no free buffer
-  uint64_t forced_writes = 0;    // writes that waited max_wait and took the sampler's cycle
-  uint64_t max_latency = 0;      // most cycles a buffer waited from ready to its access
-  uint64_t latency_sum = 0;      // for the mean: latency_sum / write_accesses
-  size_t max_ready = 0;          // most buffers ready at once
-  size_t max_busy_bank = 0;      // most buffers not free in one bank at once (high-water)
-  size_t max_busy_total = 0;     // most buffers not free in all banks at once
+  uint64_t sampler_wanted = 0;          // cycles the sampler wanted the memory
+  uint64_t sampler_granted = 0;         // ... and got it
+  uint64_t sampler_lost = 0;            // ... and did not (a write had it): wanted - granted
+  uint64_t write_accesses = 0;          // buffers written
+  uint64_t write_cycles = 0;            // cycles the writes took (accesses + page faults)
+  uint64_t page_faults = 0;             // write accesses that faulted
+  uint64_t cells_in = 0;                // cell writes collected
+  uint64_t cells_written = 0;           // cells the write accesses stored
+  uint64_t lost_writes = 0;             // cell writes that found no free buffer
+  uint64_t forced_writes = 0;           // writes that waited max_wait and took the sampler's cycle
+  uint64_t max_latency = 0;             // most cycles a buffer waited from ready to its access
+  uint64_t min_latency = ~uint64_t{0};  // fewest (no write yet: all ones)
+  uint64_t latency_sum = 0;             // for the mean: latency_sum / write_accesses
+  size_t max_ready = 0;                 // most buffers ready at once
+  size_t max_busy_bank = 0;             // most buffers not free in one bank at once (high-water)
+  size_t max_busy_total = 0;            // most buffers not free in all banks at once
   double mean_latency() const {
     return write_accesses ? static_cast<double>(latency_sum) / static_cast<double>(write_accesses)
                           : 0.0;
