@@ -478,13 +478,23 @@ TEST(VideoDoubleBufferTest, AMalformedFrameIsNeverShown) {
 // ---- the figure ---------------------------------------------------------------------------
 
 // Sampler cycles lost to a 512 x 512 video at 30 frames per second (one access per 30 ns, the
-// sampler at full rate, page-row buffers of 512 cells, L = 64), one plane and four: printed for
-// docs/video.md, and asserted (measured 2026-12-03).
+// sampler at full rate, L = 64, two progressive frames), one plane and four, with page-row
+// buffers of 512 cells (the default) and of smaller segments: printed for docs/video.md and
+// asserted (measured 2026-12-03). Also printed: the accesses a second the same video would take
+// written cell by cell (no buffers), the patent's 4/3 cells per texel per plane.
 TEST(VideoFigureTest, SamplerCyclesLostTo512VideoAt30fps) {
   const double cycles_per_second = 1e9 / static_cast<double>(kCycleNs);
-  for (int planes : {1, 4}) {
-    const VideoFormat f{9, 9, false, planes};
-    VideoMap map({f, 0, 1, {}});
+  struct Row {
+    int planes;
+    uint32_t segment;
+    uint64_t lost;  // over the two frames
+  };
+  for (const Row& row :
+       {Row{1, 512, 2760}, Row{4, 512, 10944}, Row{1, 128, 10943}, Row{4, 128, 43719}}) {
+    const VideoFormat f{9, 9, false, row.planes};
+    VideoMapConfig cfg{f, 0, 1, {}};
+    cfg.arbiter.segment_cells = row.segment;
+    VideoMap map(cfg);
     RunOptions o;
     o.rate = video_rate(512, 512, 30);
     o.sampler = SamplerPattern::kFull;
@@ -493,19 +503,22 @@ TEST(VideoFigureTest, SamplerCyclesLostTo512VideoAt30fps) {
     const ArbiterStats& s = map.row_buffers().stats();
     const double lost_per_frame = static_cast<double>(s.sampler_lost) / frames;
     const double per_second = lost_per_frame * 30;
+    const double cells_per_second = static_cast<double>(s.cells_in) / frames * 30;
     std::printf(
-        "512x512 30 fps, %d plane(s): %llu cycles, %llu write accesses (%llu cells), %llu page "
-        "faults; sampler lost %.0f cycles a frame, %.0f a second = %.3f %% of %.0f; write "
-        "latency max %llu mean %.1f; buffers high-water %zu a bank, %zu in all\n",
-        planes, static_cast<unsigned long long>(cycles),
+        "512x512 30 fps, %d plane(s), segment %u: %llu cycles, %llu write accesses (%llu cells), "
+        "%llu page faults; sampler lost %.0f cycles a frame, %.0f a second = %.3f %% of %.0f; "
+        "write latency min %llu max %llu mean %.1f; buffers high-water %zu a bank, %zu in all; "
+        "cell by cell: %.0f accesses a second = %.1f %%\n",
+        row.planes, row.segment, static_cast<unsigned long long>(cycles),
         static_cast<unsigned long long>(s.write_accesses),
         static_cast<unsigned long long>(s.cells_written),
         static_cast<unsigned long long>(s.page_faults), lost_per_frame, per_second,
         100.0 * per_second / cycles_per_second, cycles_per_second,
+        static_cast<unsigned long long>(s.min_latency),
         static_cast<unsigned long long>(s.max_latency), s.mean_latency(), s.max_busy_bank,
-        s.max_busy_total);
+        s.max_busy_total, cells_per_second, 100.0 * cells_per_second / cycles_per_second);
     EXPECT_EQ(s.write_accesses, expected_write_accesses(map, frames));
-    EXPECT_EQ(s.sampler_lost, planes == 1 ? 2760u : 10944u);
+    EXPECT_EQ(s.sampler_lost, row.lost);
     EXPECT_EQ(s.lost_writes, 0u);
   }
 }

@@ -126,6 +126,7 @@ void RowBuffers::write_access(size_t id) {
   }
   const uint64_t latency = stats_.cycles - b.ready_cycle;
   stats_.max_latency = std::max(stats_.max_latency, latency);
+  stats_.min_latency = std::min(stats_.min_latency, latency);
   stats_.latency_sum += latency;
   ++stats_.write_accesses;
   stats_.cells_written += b.count;
