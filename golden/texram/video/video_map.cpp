@@ -1,5 +1,6 @@
 #include "texram/video/video_map.hpp"
 
+#include <random>
 #include <stdexcept>
 #include <string>
 

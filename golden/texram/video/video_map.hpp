@@ -18,9 +18,7 @@
 
 #include <cstdint>
 #include <functional>
-#include <memory>
 #include <optional>
-#include <random>
 #include <vector>
 
 #include "texram/chip/drf.hpp"
