@@ -137,10 +137,34 @@ void RowBuffers::write_access(size_t id) {
   busy_ = fault ? 2 : 1;
 }
 
+uint64_t RowBuffers::request_read(unsigned bank, uint32_t segment) {
+  reads_.push_back({bank, segment, stats_.cycles});
+  return ++reads_requested_;
+}
+
+void RowBuffers::read_access() {
+  const Read r = reads_.front();
+  reads_.pop_front();
+  const uint32_t page = (r.segment * config_.segment_cells) >> kPageBits;
+  const bool fault = open_page_[r.bank] != page;
+  open_page_[r.bank] = page;
+  stats_.max_read_latency = std::max(stats_.max_read_latency, stats_.cycles - r.request_cycle);
+  ++stats_.read_accesses;
+  stats_.read_cycles += fault ? 2 : 1;
+  stats_.read_faults += fault;
+  ++reads_completed_;
+  reading_ = true;
+  busy_ = fault ? 2 : 1;
+}
+
 bool RowBuffers::cycle(bool sampler_wants) {
   stats_.sampler_wanted += sampler_wants;
   bool granted = false;
-  if (busy_ == 0 && !ready_.empty()) {
+  if (busy_ == 0 && !reads_.empty() &&
+      (!sampler_wants || stats_.cycles - reads_.front().request_cycle >= config_.read_wait)) {
+    stats_.forced_writes += sampler_wants;  // a read first: it has a deadline, its line
+    read_access();
+  } else if (busy_ == 0 && !ready_.empty()) {
     // The oldest ready buffer not held by the swap barrier.
     auto it = std::find_if(ready_.begin(), ready_.end(),
                            [&](size_t id) { return buffers_[id].tag <= hold_after_; });
@@ -155,7 +179,8 @@ bool RowBuffers::cycle(bool sampler_wants) {
     }
   }
   if (busy_ > 0) {
-    if (--busy_ == 0) buffers_[writing_].state = State::kFree;
+    if (--busy_ == 0 && !reading_) buffers_[writing_].state = State::kFree;
+    if (busy_ == 0) reading_ = false;
   } else if (sampler_wants) {
     granted = true;
     open_page_.fill(std::nullopt);  // the sampler's access moves every bank's page

@@ -1,5 +1,6 @@
 #include "texram/video/video_map.hpp"
 
+#include <algorithm>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -18,7 +19,7 @@ const VideoMapConfig& checked(const VideoMapConfig& c) {
 }
 
 BankImage make_memory(const VideoMapConfig& c, const Geometry& g) {
-  const uint64_t end = uint64_t{c.base} + 2 * uint64_t{g.bank_cells()};
+  const uint64_t end = uint64_t{c.base} + VideoMap::buffer_stride(g) + g.bank_cells();
   if (end > chip::kBankCells) {
     throw std::invalid_argument("VideoMap: two buffers of " + std::to_string(g.bank_cells()) +
                                 " cells a bank at base " + std::to_string(c.base) +
@@ -50,6 +51,7 @@ void VideoMap::begin_frame() {
   f.buffer = 1 - newest_;
   f.begin_cycle = cycles();
   frames_.push_back(f);
+  reads_needed_.assign(config_.format.height(), 0);
   streams_.clear();
   const VideoFormat& v = config_.format;
   for (int p = 0; p < v.planes; ++p) {
@@ -76,6 +78,21 @@ void VideoMap::end_frame(bool complete) {
   rows_.hold_after(f.tag);  // the next frame writes the front buffer: held until the swap
 }
 
+void VideoMap::read_line_above(uint32_t above, uint32_t line) {
+  const uint32_t base = buffer_base(frames_.back().buffer);
+  std::vector<std::pair<unsigned, uint32_t>> segments;
+  for (uint32_t x = 0; x < geometry_.stored_width(0); ++x) {
+    for (int p = 0; p < config_.format.planes; ++p) {
+      const BankCell c = geometry_.cell(0, x, above, p);
+      const std::pair<unsigned, uint32_t> s{c.bank,
+                                            (base + c.address) / config_.arbiter.segment_cells};
+      if (std::find(segments.begin(), segments.end(), s) == segments.end()) segments.push_back(s);
+    }
+  }
+  for (const auto& [bank, segment] : segments)
+    reads_needed_[line] = rows_.request_read(bank, segment);
+}
+
 void VideoMap::receive(const VideoItem& item) {
   const Received r = receiver_.step(item);
   if (r.dropped) end_frame(false);
@@ -83,6 +100,15 @@ void VideoMap::receive(const VideoItem& item) {
   if (r.frame_start) begin_frame();
   const FrameRecord& f = frames_.back();
   const uint32_t base = buffer_base(f.buffer);
+  // Interlaced: the line above each field-2 line is read into the shift registers a line ahead:
+  // line 0 at the start of field 1's last line, line y + 1 at the start of field-2 line y. (A
+  // two-line frame's line 0 is the line just received: taken as it arrives, no read.)
+  const uint32_t h = config_.format.height();
+  if (config_.format.fields() && h > 2 && r.x == 0 && !config_.arbiter.direct) {
+    if ((r.y & 1u) != 0 && rows_.reads_completed() < reads_needed_[r.y]) ++late_reads_;
+    if (r.y == h - 2) read_line_above(0, 1);
+    if ((r.y & 1u) != 0 && r.y + 2 < h) read_line_above(r.y + 1, r.y + 2);
+  }
   for (int p = 0; p < config_.format.planes; ++p) {
     MipgenStream& s = streams_[static_cast<size_t>(p)];
     if (s.next_x() != r.x || s.next_y() != r.y) {

@@ -2,13 +2,13 @@
 // generator (one MipgenStream per plane) into the chip's memory, double buffered.
 //
 // A video map owns two buffers in the shared memory, each one map of the format's layout:
-// buffer 0 at `base`, buffer 1 at base + bank_cells. The DRF `drf`'s base field names the front
-// buffer, the one the sampler reads; frames are written to the other, the back buffer. When a
-// frame is complete and its last cell has reached the memory (every page-row buffer holding it
-// written), the video unit writes the DRF's base field itself (a chip-side swap, through the
-// DRF write port's apply(), between two pixels like every DRF write): the sampler only ever
-// reads complete frames. Until that swap the next frame's writes, which go to the old front
-// buffer, are held in the row buffers (the swap barrier: RowBuffers::hold_after).
+// buffer 0 at `base`, buffer 1 at base + bank_cells rounded up to a page (512 cells). The DRF
+// `drf`'s base field names the front buffer, the one the sampler reads; frames are written to the
+// other, the back buffer. When a frame is complete and its last cell has reached the memory (every
+// page-row buffer holding it written), the video unit writes the DRF's base field itself (a
+// chip-side swap, through the DRF write port's apply(), between two pixels like every DRF write):
+// the sampler only ever reads complete frames. Until that swap the next frame's writes, which go to
+// the old front buffer, are held in the row buffers (the swap barrier: RowBuffers::hold_after).
 //
 // Interlaced field-2 items need `above`, the level-0 texel of the line above: read back from the
 // frame being written (row buffers first, then memory), as the patent's shift registers 826
@@ -56,7 +56,13 @@ class VideoMap {
   const VideoMapConfig& config() const { return config_; }
   const Geometry& geometry() const { return geometry_; }
   uint32_t buffer_base(int buffer) const {
-    return config_.base + static_cast<uint32_t>(buffer) * geometry_.bank_cells();
+    return config_.base + static_cast<uint32_t>(buffer) * buffer_stride(geometry_);
+  }
+  // Buffer 1 follows buffer 0 at the next page boundary: a buffer's bank_cells rounded up to a
+  // DRAM page (512 cells), so that both buffers' lines fall on pages alike.
+  static uint32_t buffer_stride(const Geometry& g) {
+    const uint32_t page = uint32_t{1} << kPageBits;
+    return (g.bank_cells() + page - 1) / page * page;
   }
 
   // One item of the port, arriving in the current cycle.
@@ -75,6 +81,9 @@ class VideoMap {
   const RowBuffers& row_buffers() const { return rows_; }
   const VideoReceiver& receiver() const { return receiver_; }
   uint64_t cycles() const { return rows_.stats().cycles; }
+  // Interlaced field-2 lines whose line above had not been read into the shift registers when
+  // the line began (0 at every rate the tests run).
+  uint64_t late_reads() const { return late_reads_; }
 
   // Plane `plane`'s texel (x, y) of `level` in buffer `buffer`, read from the memory.
   uint8_t read(int buffer, int level, uint32_t x, uint32_t y, int plane) const;
@@ -84,6 +93,8 @@ class VideoMap {
  private:
   void begin_frame();
   void end_frame(bool complete);
+  // Requests the reads of level-0 line `above` of the frame under way, for field-2 line `line`.
+  void read_line_above(uint32_t above, uint32_t line);
 
   VideoMapConfig config_;
   Geometry geometry_;
@@ -97,7 +108,9 @@ class VideoMap {
   int front_ = 0;   // buffer the DRF shows
   int newest_ = 0;  // buffer of the newest complete frame (shown or pending)
   uint64_t front_tag_ = 0;
-  std::optional<size_t> pending_;  // frames_ index of the complete frame awaiting its swap
+  std::optional<size_t> pending_;       // frames_ index of the complete frame awaiting its swap
+  std::vector<uint64_t> reads_needed_;  // per line: reads that must be complete at its start
+  uint64_t late_reads_ = 0;
 };
 
 // Cycles at which the sampler wants the memory.
