@@ -10,10 +10,14 @@
 // the sampler only ever reads complete frames. Until that swap the next frame's writes, which go to
 // the old front buffer, are held in the row buffers (the swap barrier: RowBuffers::hold_after).
 //
-// Interlaced field-2 items need `above`, the level-0 texel of the line above: read back from the
-// frame being written (row buffers first, then memory), as the patent's shift registers 826
-// hold it. A dropped frame (video_port.hpp) has written part of the back buffer; it is never
-// shown, and the next frame, to the same buffer, writes every cell again.
+// Interlaced field-2 items need `above`, the level-0 texel of the line above: the line is read
+// into the shift registers 826 a line ahead, as segment reads through the arbiter
+// (RowBuffers::request_read; line 0 at the start of field 1's last line, line y + 1 at the
+// start of field-2 line y; a two-line frame's line 0 is taken as it arrives), its cells as
+// RowBuffers::read_back gives them (row buffers first, then memory); a line that begins before
+// its reads are done is counted (late_reads). A dropped frame (video_port.hpp) has written part of
+// the back buffer; it is never shown, and the next frame, to the same buffer, writes every cell
+// again.
 #pragma once
 
 #include <cstdint>
