@@ -370,6 +370,16 @@ package tmu_pkg;
   localparam int unsigned VolumeGradFrac = 4;
   typedef logic signed [VolumeGradW-1:0] volume_grad_t;
 
+  // VideoFlags: UQ4.0, video port item: bit 0 first of frame, 1 first of field, 2 first of line, 3 field 2 (an odd line of an interlaced frame)
+  localparam int unsigned VideoFlagsW = 4;
+  localparam int unsigned VideoFlagsFrac = 0;
+  typedef logic [VideoFlagsW-1:0] video_flags_t;
+
+  // VideoTexel: UQ32.0, video port item: the texel's bytes, plane 0 in 31:24 (R G B A; one-plane video: 31:24)
+  localparam int unsigned VideoTexelW = 32;
+  localparam int unsigned VideoTexelFrac = 0;
+  typedef logic [VideoTexelW-1:0] video_texel_t;
+
   // largest texture side in texels
   localparam int unsigned MaxTexSize = 4096;
 

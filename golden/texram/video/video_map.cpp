@@ -1,0 +1,199 @@
+#include "texram/video/video_map.hpp"
+
+#include <algorithm>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "texram/chip/chip_memory.hpp"
+
+namespace tmu::texram::video {
+namespace {
+
+const VideoMapConfig& checked(const VideoMapConfig& c) {
+  if (c.drf < 1 || c.drf > chip::kDrfs) {
+    throw std::invalid_argument("VideoMap: DRF " + std::to_string(c.drf) + " outside 1.." +
+                                std::to_string(chip::kDrfs));
+  }
+  return c;
+}
+
+BankImage make_memory(const VideoMapConfig& c, const Geometry& g) {
+  const uint64_t end = uint64_t{c.base} + VideoMap::buffer_stride(g) + g.bank_cells();
+  if (end > chip::kBankCells) {
+    throw std::invalid_argument("VideoMap: two buffers of " + std::to_string(g.bank_cells()) +
+                                " cells a bank at base " + std::to_string(c.base) +
+                                " end beyond the bank's " + std::to_string(chip::kBankCells));
+  }
+  BankImage m;
+  for (auto& bank : m) bank.assign(end, 0);
+  return m;
+}
+
+}  // namespace
+
+VideoMap::VideoMap(const VideoMapConfig& config)
+    : config_(checked(config)),
+      geometry_(config.format.log2_w, config.format.log2_h, config.format.planes),
+      memory_(make_memory(config, geometry_)),
+      rows_(config.arbiter, memory_),
+      receiver_(config.format) {
+  chip::Drf& d = drfs_[static_cast<size_t>(config.drf - 1)];
+  d.base = buffer_base(0);
+  d.log2_w = config.format.log2_w;
+  d.log2_h = config.format.log2_h;
+  d.sampler.kind = config.format.planes == 1 ? TexelKind::kLuminance : TexelKind::kTrueColour;
+}
+
+void VideoMap::begin_frame() {
+  FrameRecord f;
+  f.tag = frames_.size() + 1;
+  f.buffer = 1 - newest_;
+  f.begin_cycle = cycles();
+  frames_.push_back(f);
+  reads_needed_.assign(config_.format.height(), 0);
+  streams_.clear();
+  const VideoFormat& v = config_.format;
+  for (int p = 0; p < v.planes; ++p) {
+    streams_.emplace_back(MipgenConfig{v.log2_w, v.log2_h, v.interlaced, v.planes, p});
+  }
+}
+
+void VideoMap::end_frame(bool complete) {
+  FrameRecord& f = frames_.back();
+  f.end_cycle = cycles();
+  rows_.flush(f.tag);
+  if (!complete) {
+    f.dropped = true;
+    return;
+  }
+  f.complete = true;
+  if (pending_) {
+    throw std::logic_error("VideoMap: frame " + std::to_string(f.tag) + " complete before frame " +
+                           std::to_string(frames_[*pending_].tag) +
+                           " was swapped in: the memory cannot keep up");
+  }
+  newest_ = f.buffer;
+  pending_ = frames_.size() - 1;
+  rows_.hold_after(f.tag);  // the next frame writes the front buffer: held until the swap
+}
+
+void VideoMap::read_line_above(uint32_t above, uint32_t line) {
+  const uint32_t base = buffer_base(frames_.back().buffer);
+  std::vector<std::pair<unsigned, uint32_t>> segments;
+  for (uint32_t x = 0; x < geometry_.stored_width(0); ++x) {
+    for (int p = 0; p < config_.format.planes; ++p) {
+      const BankCell c = geometry_.cell(0, x, above, p);
+      const std::pair<unsigned, uint32_t> s{c.bank,
+                                            (base + c.address) / config_.arbiter.segment_cells};
+      if (std::find(segments.begin(), segments.end(), s) == segments.end()) segments.push_back(s);
+    }
+  }
+  for (const auto& [bank, segment] : segments)
+    reads_needed_[line] = rows_.request_read(bank, segment);
+}
+
+void VideoMap::receive(const VideoItem& item) {
+  const Received r = receiver_.step(item);
+  if (r.dropped) end_frame(false);
+  if (!r.accepted) return;
+  if (r.frame_start) begin_frame();
+  const FrameRecord& f = frames_.back();
+  const uint32_t base = buffer_base(f.buffer);
+  // Interlaced: the line above each field-2 line is read into the shift registers a line ahead:
+  // line 0 at the start of field 1's last line, line y + 1 at the start of field-2 line y. (A
+  // two-line frame's line 0 is the line just received: taken as it arrives, no read.)
+  const uint32_t h = config_.format.height();
+  if (config_.format.fields() && h > 2 && r.x == 0 && !config_.arbiter.direct) {
+    if ((r.y & 1u) != 0 && rows_.reads_completed() < reads_needed_[r.y]) ++late_reads_;
+    if (r.y == h - 2) read_line_above(0, 1);
+    if ((r.y & 1u) != 0 && r.y + 2 < h) read_line_above(r.y + 1, r.y + 2);
+  }
+  for (int p = 0; p < config_.format.planes; ++p) {
+    MipgenStream& s = streams_[static_cast<size_t>(p)];
+    if (s.next_x() != r.x || s.next_y() != r.y) {
+      throw std::logic_error("VideoMap: the receiver and the generator disagree on the position");
+    }
+    MipgenInput in{item.bytes[static_cast<size_t>(p)], 0};
+    if (s.needs_above()) {
+      const BankCell c = geometry_.cell(0, r.x, r.y - 1, p);
+      in.above = rows_.read_back(c.bank, base + c.address);
+    }
+    writes_.clear();
+    s.step(in, writes_);
+    for (const CellWrite& w : writes_)
+      rows_.put(w.cell.bank, base + w.cell.address, w.value, f.tag);
+  }
+  if (r.frame_end) end_frame(true);
+}
+
+bool VideoMap::cycle(bool sampler_wants) {
+  const bool granted = rows_.cycle(sampler_wants);
+  if (pending_ && rows_.buffers_of(frames_[*pending_].tag) == 0) {
+    FrameRecord& f = frames_[*pending_];
+    chip::apply(drfs_, {static_cast<uint8_t>(config_.drf),
+                        static_cast<uint8_t>(chip::DrfFieldId::kBase), buffer_base(f.buffer)});
+    front_ = f.buffer;
+    front_tag_ = f.tag;
+    f.swap_cycle = cycles();
+    pending_.reset();
+    rows_.hold_after(~uint64_t{0});
+  }
+  return granted;
+}
+
+uint8_t VideoMap::read(int buffer, int level, uint32_t x, uint32_t y, int plane) const {
+  const BankCell c = geometry_.cell(level, x, y, plane);
+  return memory_[c.bank][buffer_base(buffer) + c.address];
+}
+
+Pyramid8 VideoMap::read_pyramid(int buffer, int plane) const {
+  Pyramid8 p;
+  for (int l = 0; l < geometry_.levels(); ++l) {
+    Level8 level(geometry_.texel_width(l), geometry_.texel_height(l));
+    for (uint32_t y = 0; y < level.height; ++y) {
+      for (uint32_t x = 0; x < level.width; ++x) level.at(x, y) = read(buffer, l, x, y, plane);
+    }
+    p.push_back(std::move(level));
+  }
+  return p;
+}
+
+uint64_t run(VideoMap& map, const std::vector<VideoItem>& items, const RunOptions& options) {
+  std::mt19937_64 rng(options.seed);
+  auto wants = [&] {
+    switch (options.sampler) {
+      case SamplerPattern::kNone:
+        return false;
+      case SamplerPattern::kFull:
+        return true;
+      case SamplerPattern::kRandom:
+        return rng() % 100 < options.random_percent;
+    }
+    return false;
+  };
+  uint64_t n = 0;
+  auto step = [&] {
+    const bool granted = map.cycle(wants());
+    if (options.on_cycle) options.on_cycle(map, granted);
+    ++n;
+  };
+  uint64_t acc = 0;
+  size_t i = 0;
+  while (i < items.size()) {
+    acc += options.rate.num;
+    while (acc >= options.rate.den && i < items.size()) {
+      acc -= options.rate.den;
+      map.receive(items[i++]);
+    }
+    step();
+  }
+  if (options.drain_cycles > 0) {
+    for (uint64_t k = 0; k < options.drain_cycles; ++k) step();
+  } else {
+    while (map.swap_pending() || !map.row_buffers().idle()) step();
+  }
+  return n;
+}
+
+}  // namespace tmu::texram::video
