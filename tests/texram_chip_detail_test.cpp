@@ -16,11 +16,6 @@ namespace {
 
 using detail_test::kOne;
 
-uint32_t page_up(uint32_t cells) {
-  constexpr uint32_t kPage = uint32_t{1} << kPageBits;
-  return (cells + kPage - 1) / kPage * kPage;
-}
-
 struct ChipWithDetail {
   detail_test::Scene scene;
   SamplerConfig config;

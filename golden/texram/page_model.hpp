@@ -11,7 +11,12 @@
 
 namespace tmu::texram {
 
-inline constexpr int kPageBits = 9;        // 512 cells per DRAM page
+inline constexpr int kPageBits = 9;  // 512 cells per DRAM page
+inline constexpr uint32_t kPageCells = uint32_t{1} << kPageBits;
+// `cells` rounded up to whole pages: where the next page-aligned map may start.
+constexpr uint32_t page_up(uint64_t cells) {
+  return static_cast<uint32_t>((cells + kPageCells - 1) / kPageCells * kPageCells);
+}
 inline constexpr double kAccessNs = 30.0;  // page hit (§5); a fault adds as much again
 inline constexpr double kUnitClockMhz = 1e3 / kAccessNs;  // one access per clock: 33.3 MHz
 

@@ -18,7 +18,6 @@ using texram::chip::kCubeDrf;
 using texram::chip::kDrfs;
 
 constexpr const char* kFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
-constexpr uint32_t kPageCells = uint32_t{1} << texram::kPageBits;
 
 // One DRF of a material's chain before placement.
 struct Step {
@@ -36,9 +35,7 @@ bool needs_clut(const texram::TexramTexture& t) {
   return t.kind == texram::TexelKind::kIndex || t.kind == texram::TexelKind::kCcc;
 }
 
-uint32_t page_up(uint64_t cells) {
-  return static_cast<uint32_t>((cells + kPageCells - 1) / kPageCells * kPageCells);
-}
+using texram::page_up;
 
 // The chain of `mat` in effect_chain's order, or the reason it has none.
 std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex,

@@ -115,8 +115,7 @@ void apply(DrfFile& file, const DrfWrite& w) {
 
 uint32_t offsets_v_base(const Drf& offsets) {
   const Geometry g(offsets.log2_w, offsets.log2_h);  // one byte plane: the offsets are bytes
-  constexpr uint32_t kPage = uint32_t{1} << kPageBits;
-  return offsets.base + (g.bank_cells() + kPage - 1) / kPage * kPage;
+  return offsets.base + page_up(g.bank_cells());
 }
 
 std::vector<int> chain(const DrfFile& file, int lead) {

@@ -39,7 +39,7 @@ constexpr int32_t kCoordMax = static_cast<int32_t>(fmts::kTexCoord.max_raw());
 constexpr int32_t kLodMin = static_cast<int32_t>(fmts::kLod.min_raw());
 constexpr int32_t kLodMax = static_cast<int32_t>(fmts::kLod.max_raw());
 constexpr int32_t kUnitOne = int32_t{1} << fmts::kUnitComp.frac_bits;
-constexpr uint32_t kPage = uint32_t{1} << texram::kPageBits;
+constexpr uint32_t kPage = texram::kPageCells;
 // A random run writes a new program after this many pixels.
 constexpr int kPixelsPerProgram = 300;
 
