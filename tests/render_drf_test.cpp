@@ -51,7 +51,7 @@ void expect_error(const host::Scene& scene, int chips, const std::string& field,
 }
 
 TEST(RenderDrfTest, EveryBundledSceneCompilesWithItsMapsApart) {
-  constexpr uint32_t kPage = uint32_t{1} << texram::kPageBits;
+  constexpr uint32_t kPage = texram::kPageCells;
   for (const auto& entry : fs::directory_iterator(std::string(TMU_SOURCE_DIR) + "/scenes")) {
     if (entry.path().extension() != ".json") continue;
     SCOPED_TRACE(entry.path().filename().string());

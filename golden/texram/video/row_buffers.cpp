@@ -9,7 +9,7 @@ namespace tmu::texram::video {
 
 RowBuffers::RowBuffers(const ArbiterConfig& config, BankImage& memory)
     : config_(config), memory_(memory) {
-  const uint32_t page = uint32_t{1} << kPageBits;
+  const uint32_t page = kPageCells;
   if (!std::has_single_bit(config.segment_cells) || config.segment_cells > page) {
     throw std::invalid_argument("RowBuffers: a segment is a power of two up to " +
                                 std::to_string(page) + " cells");

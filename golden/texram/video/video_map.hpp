@@ -64,10 +64,7 @@ class VideoMap {
   }
   // Buffer 1 follows buffer 0 at the next page boundary: a buffer's bank_cells rounded up to a
   // DRAM page (512 cells), so that both buffers' lines fall on pages alike.
-  static uint32_t buffer_stride(const Geometry& g) {
-    const uint32_t page = uint32_t{1} << kPageBits;
-    return (g.bank_cells() + page - 1) / page * page;
-  }
+  static uint32_t buffer_stride(const Geometry& g) { return page_up(g.bank_cells()); }
 
   // One item of the port, arriving in the current cycle.
   void receive(const VideoItem& item);
