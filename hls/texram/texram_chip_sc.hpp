@@ -23,7 +23,6 @@
 #include "hls/common/sc_ports.hpp"
 #include "texram/chip/drf.hpp"
 #include "texram/chip/texram_chip.hpp"
-#include "texram/specular_combine.hpp"
 #include "texram/trilinear.hpp"
 
 namespace tmu::hls {
@@ -42,7 +41,6 @@ class TexramChipSc : public sc_core::sc_module {
 
  private:
   using Drf = texram::chip::Drf;
-  using DrfOp = texram::chip::DrfOp;
 
   struct Param {
     int lead = 0;
@@ -137,9 +135,8 @@ class TexramChipSc : public sc_core::sc_module {
   // golden TexramChip::pixel, with the parameters from the port.
   void pixel(Param p) {
     ++pixels_;
-    uint32_t shade = p.request.shade;
-    uint32_t colour = 0, reflectance = 0, environment = 0;
-    bool have_reflectance = false, have_environment = false, shaded_by_map = false;
+    texram::chip::PixelRegisters regs;
+    regs.shade = p.request.shade;
     int number = p.lead & 7;
     for (int step = 0; number != 0; ++step) {
       if (step == texram::chip::kMaxSteps) {
@@ -149,37 +146,14 @@ class TexramChipSc : public sc_core::sc_module {
       const Drf& d = drfs_[static_cast<size_t>(number - 1)];
       if (step > 0 && d.takes_coords) {
         p = take_param();
-        if (d.op == DrfOp::kTexture && !shaded_by_map) shade = p.request.shade;
+        regs.take_parameter(d, p.request.shade);
       }
       ++steps_;
-      const uint32_t s = sample(d, p, shade);
-      switch (d.op) {
-        case DrfOp::kTexture:
-          colour = s;
-          break;
-        case DrfOp::kShading:
-          shade = s;
-          shaded_by_map = true;
-          break;
-        case DrfOp::kReflectance:
-          reflectance = s;
-          have_reflectance = true;
-          break;
-        case DrfOp::kEnvironment:
-          environment = s;
-          if (!have_reflectance) reflectance = d.sampler.constant_rgba;
-          have_environment = true;
-          break;
-        case DrfOp::kEmit:
-          emit(s, false);
-          break;
-        default:
-          break;
-      }
+      const uint32_t s = sample(d, p, regs.shade);
+      if (regs.apply(d, s)) emit(s, false);
       number = d.link;
     }
-    emit(have_environment ? texram::specular_combine(colour, environment, reflectance) : colour,
-         true);
+    emit(regs.result(), true);
   }
 
   // One access of the eight banks at the map's base: request (held until taken), then its

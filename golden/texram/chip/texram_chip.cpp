@@ -130,9 +130,8 @@ void TexramChip::pixel(const std::vector<PixelParameter>& params, size_t& next,
   };
   ++stats_.pixels;
   const PixelParameter* p = &take();
-  uint32_t shade = p->request.shade;
-  uint32_t colour = 0, reflectance = 0, environment = 0;
-  bool have_reflectance = false, have_environment = false, shaded_by_map = false;
+  PixelRegisters regs;
+  regs.shade = p->request.shade;
   int number = p->lead & 7;
   for (int step = 0; number != 0; ++step) {
     if (step >= kMaxSteps) {
@@ -142,33 +141,11 @@ void TexramChip::pixel(const std::vector<PixelParameter>& params, size_t& next,
     const Drf& d = drfs_[static_cast<size_t>(number - 1)];
     if (step > 0 && d.takes_coords) {
       p = &take();
-      if (d.op == DrfOp::kTexture && !shaded_by_map) shade = p->request.shade;
+      regs.take_parameter(d, p->request.shade);
     }
     ++stats_.steps;
-    const uint32_t s = assemble(number, d, *p, shade);
-    switch (d.op) {
-      case DrfOp::kTexture:
-        colour = s;
-        break;
-      case DrfOp::kShading:
-        shade = s;
-        shaded_by_map = true;
-        break;
-      case DrfOp::kReflectance:
-        reflectance = s;
-        have_reflectance = true;
-        break;
-      case DrfOp::kEnvironment:
-        environment = s;
-        if (!have_reflectance) reflectance = d.sampler.constant_rgba;
-        have_environment = true;
-        break;
-      case DrfOp::kEmit:
-        out.push_back({s, false});
-        break;
-      default:
-        break;  // an offsets or detail DRF reached on its own, op 7: read, nothing more
-    }
+    const uint32_t s = assemble(number, d, *p, regs.shade);
+    if (regs.apply(d, s)) out.push_back({s, false});
     number = d.link;
     // A detail map's offsets and detail DRFs were visited within this DRF's sample: the chain
     // goes on after them (they count as steps).
@@ -181,8 +158,36 @@ void TexramChip::pixel(const std::vector<PixelParameter>& params, size_t& next,
       }
     }
   }
-  out.push_back(
-      {have_environment ? specular_combine(colour, environment, reflectance) : colour, true});
+  out.push_back({regs.result(), true});
+}
+
+bool PixelRegisters::apply(const Drf& d, uint32_t sample) {
+  switch (d.op) {
+    case DrfOp::kTexture:
+      colour = sample;
+      return false;
+    case DrfOp::kShading:
+      shade = sample;
+      shaded_by_map = true;
+      return false;
+    case DrfOp::kReflectance:
+      reflectance = sample;
+      have_reflectance = true;
+      return false;
+    case DrfOp::kEnvironment:
+      environment = sample;
+      if (!have_reflectance) reflectance = d.sampler.constant_rgba;
+      have_environment = true;
+      return false;
+    case DrfOp::kEmit:
+      return true;
+    default:
+      return false;  // an offsets or detail DRF reached on its own, op 7: read, nothing more
+  }
+}
+
+uint32_t PixelRegisters::result() const {
+  return have_environment ? specular_combine(colour, environment, reflectance) : colour;
 }
 
 }  // namespace tmu::texram::chip

@@ -48,6 +48,21 @@ struct ChipAccess {
   friend bool operator==(const ChipAccess&, const ChipAccess&) = default;
 };
 
+// A pixel's registers and what a DRF's op does with its sample: the sequencer's combine, one
+// piece for the golden model and the hls model.
+struct PixelRegisters {
+  uint32_t shade = 0, colour = 0, reflectance = 0, environment = 0;
+  bool have_reflectance = false, have_environment = false, shaded_by_map = false;
+  // A texture DRF's new parameter brings I_d, unless a shading map has set it.
+  void take_parameter(const Drf& d, uint32_t parameter_shade) {
+    if (d.op == DrfOp::kTexture && !shaded_by_map) shade = parameter_shade;
+  }
+  // Keeps `sample` as d's op says; true when it leaves the chip at once (emit).
+  bool apply(const Drf& d, uint32_t sample);
+  // The pixel's colour: C_d, or eq. 6-7 once an environment was sampled.
+  uint32_t result() const;
+};
+
 struct ChipStats {
   uint64_t pixels = 0, parameters = 0, steps = 0;  // steps: DRF visits (a detail map's: 3)
   PageStats pages;                                 // the shared memory's page model
