@@ -87,6 +87,12 @@ concept Clocked = requires(Model m) {
   m.clk_i = 1;
 };
 
+// Verilated with --trace-fst (every model but the mutants).
+template <class Model>
+concept Traced = requires(Model m, VerilatedFstC* fst) {
+  m.trace(fst, 99);
+};
+
 // A Verilated model as the cycle loop's Sim.
 template <class Model>
 class RtlSim {
@@ -101,7 +107,12 @@ class RtlSim {
     m_ = std::make_unique<Model>(ctx_.get(), "TOP");
     if (trace_) {
       fst_ = std::make_unique<VerilatedFstC>();
-      m_->trace(fst_.get(), 99);
+      if constexpr (Traced<Model>) {
+        m_->trace(fst_.get(), 99);
+      } else {
+        throw std::runtime_error("this model was built without waveforms (rtl/CMakeLists.txt: "
+                                 "the mutants are)");
+      }
     }
     if constexpr (Clocked<Model>) m_->clk_i = 0;
     adapter_.init(*m_);
