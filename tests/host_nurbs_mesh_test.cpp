@@ -105,7 +105,7 @@ TEST(HostNurbsSceneTest, EveryKeyIsCheckedWithAClearError) {
   expect_error(j, "objects[0].patches[0]", "knots_t");
   j = bad;
   j["objects"][0]["tessellation"] = {{"dc", 0}};
-  expect_error(j, "objects[0].tessellation.dc", "must be a finite number > 0");
+  expect_error(j, "objects[0].tessellation.dc", "must be > 0");
   j = bad;
   j["objects"][0]["tessellation"] = {{"combine", "median"}};
   expect_error(j, "objects[0].tessellation.combine", "");

@@ -17,10 +17,6 @@ using IVec3 = std::array<int64_t, 3>;
 
 IVec3 channels(Rgb8 c) { return {c.r, c.g, c.b}; }
 
-Vec3 to_vec(Rgb8 c) {
-  return {static_cast<double>(c.r), static_cast<double>(c.g), static_cast<double>(c.b)};
-}
-
 // Projections closer to the threshold than this fraction of the data's spread count as on
 // the plane. It is far above double rounding (~1e-16 relative) and far below the smallest
 // real gap between projections of distinct 8-bit colours on a unit axis that is not almost

@@ -30,10 +30,6 @@ double distance2(const Vec3& a, const Vec3& b) {
   return dr * dr + dg * dg + db * db;
 }
 
-Vec3 to_vec(Rgb8 c) {
-  return {static_cast<double>(c.r), static_cast<double>(c.g), static_cast<double>(c.b)};
-}
-
 std::vector<UniqueColour> merge_duplicates(std::span<const WeightedColour> colours) {
   std::vector<UniqueColour> all;
   all.reserve(colours.size());

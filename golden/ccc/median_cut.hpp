@@ -16,6 +16,11 @@
 
 namespace tmu::ccc {
 
+// A colour as a point of RGB space.
+inline Vec3 to_vec(Rgb8 c) {
+  return {static_cast<double>(c.r), static_cast<double>(c.g), static_cast<double>(c.b)};
+}
+
 struct WeightedColour {
   Vec3 rgb{};           // R, G, B in 0..255 (values outside are clamped)
   uint64_t weight = 0;  // e.g. texel count; colours of weight 0 are ignored

@@ -2,6 +2,7 @@
 // file, the field and the reason, so the CLI can print it as-is and exit non-zero.
 #pragma once
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -22,5 +23,15 @@ class InputError : public std::runtime_error {
  private:
   std::string file_, field_, reason_;
 };
+
+// A parameter of a unit (`unit`: "noise", "material") outside its field's range: throws
+// std::invalid_argument "<unit>: <name> <value> is outside <lo>..<hi>".
+inline void check_range(const std::string& unit, const std::string& name, int64_t value, int64_t lo,
+                        int64_t hi) {
+  if (value < lo || value > hi) {
+    throw std::invalid_argument(unit + ": " + name + " " + std::to_string(value) + " is outside " +
+                                std::to_string(lo) + ".." + std::to_string(hi));
+  }
+}
 
 }  // namespace tmu

@@ -5,19 +5,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/error.hpp"
 #include "perlin/material_unit.hpp"
 
 namespace tmu::perlin {
 namespace {
 
 constexpr int64_t kIndexMask = (int64_t{1} << kIndexBits) - 1;
-
-void in_range(const char* name, int64_t value, int64_t lo, int64_t hi) {
-  if (value < lo || value > hi) {
-    throw std::invalid_argument(std::string("material: ") + name + " " + std::to_string(value) +
-                                " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
-  }
-}
 
 uint32_t level(int64_t f, uint32_t gain) {
   return static_cast<uint32_t>(std::clamp<int64_t>((f * gain) >> 22, 0, 255));
@@ -36,6 +30,9 @@ uint32_t grey(uint32_t l) { return (l << 16) | (l << 8) | l; }
 }  // namespace
 
 void check(const MaterialRegs& r) {
+  const auto in_range = [](const char* name, int64_t value, int64_t lo, int64_t hi) {
+    check_range("material", name, value, lo, hi);
+  };
   in_range("g_t", r.g_t, 0, 0xFFFF);
   in_range("g_v", r.g_v, 0, 0xFFFF);
   in_range("g_r", r.g_r, 0, 0xFFFF);

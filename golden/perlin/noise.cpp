@@ -4,17 +4,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/error.hpp"
+
 namespace tmu::perlin {
 namespace {
 
 constexpr uint32_t kLatticeMask = (1u << kLatticeBits) - 1;
-
-void in_range(const char* name, int value, int lo, int hi) {
-  if (value < lo || value > hi) {
-    throw std::invalid_argument(std::string("noise: ") + name + " " + std::to_string(value) +
-                                " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
-  }
-}
 
 // A coordinate at F fraction bits: the lattice index mod 2^12 and the fraction.
 struct Split {
@@ -30,6 +25,9 @@ Split split(int64_t raw, int frac_bits) {
 }  // namespace
 
 void check(const NoiseConfig& c) {
+  const auto in_range = [](const char* name, int64_t value, int64_t lo, int64_t hi) {
+    check_range("noise", name, value, lo, hi);
+  };
   in_range("frac_bits F", c.frac_bits, 1, kCoordFracBits);
   in_range("fade_index_bits S", c.fade_index_bits, 1, c.frac_bits);
   in_range("fade_bits B", c.fade_bits, 2, 12);

@@ -11,8 +11,8 @@
 namespace tmu::texram {
 namespace {
 
-constexpr int kLodFrac = formats::kLod.frac_bits;   // 8
-constexpr int32_t kLevel = int32_t{1} << kLodFrac;  // one level in raw SQ6.8
+constexpr int kLambdaFrac = formats::kLod.frac_bits;   // 8
+constexpr int32_t kLevel = int32_t{1} << kLambdaFrac;  // one level in raw SQ6.8
 constexpr int kRegionLog2 = std::countr_zero(static_cast<unsigned>(kDetailRegionSide));  // 4
 
 void check_side(uint32_t side, const char* what) {
@@ -75,7 +75,7 @@ int bank_accesses(const std::vector<DetailAccess>& accesses) {
 
 DetailLevels detail_levels(const Widths& widths, int32_t lambda) {
   if (lambda >= 0) return {};
-  const int drop = kLodFrac - widths.lod_frac;
+  const int drop = kLambdaFrac - widths.lod_frac;
   const int32_t lq = static_cast<int32_t>(fx::shift_right_round(lambda, drop, fx::Round::kFloor)
                                           << drop);  // L bits, floor
   if (lq <= -kLevel) return {true, lq + kDetailLevels * kLevel, 0};

@@ -180,6 +180,12 @@ JsonNode JsonNode::operator[](size_t i) const {
   return JsonNode((*value_)[i], element_path(path_, i), *file_);
 }
 
+double JsonNode::positive() const {
+  const double v = number();
+  if (!(v > 0)) fail("must be > 0");
+  return v;
+}
+
 double JsonNode::number() const {
   if (!value_->is_number()) fail("expected a number, got " + type_name(*value_));
   const double v = value_->get<double>();

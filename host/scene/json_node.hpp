@@ -50,6 +50,7 @@ class JsonNode {
 
   // --- scalars; each fails with "expected ..." on the wrong type ---
   double number() const;
+  double positive() const;  // a number > 0: "must be > 0"
   // An integer in [lo, hi]; a number with a fraction is "expected an integer".
   int64_t integer(int64_t lo, int64_t hi) const;
   std::string string() const;

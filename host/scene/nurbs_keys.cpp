@@ -13,12 +13,6 @@ namespace {
 // minutes.
 constexpr int kMaxSteps = 1024;
 
-double positive(const JsonNode& node) {
-  const double v = node.number();
-  if (!(v > 0) || !std::isfinite(v)) node.fail("must be a finite number > 0");
-  return v;
-}
-
 std::vector<double> numbers(const JsonNode& node) {
   node.expect_array();
   std::vector<double> v;
@@ -79,9 +73,9 @@ Tessellation parse_tessellation(const JsonNode& node) {
   node.expect_object();
   node.allow_keys({"mc", "dc", "tc", "combine", "max_steps"});
   Tessellation t;
-  if (auto v = node.find("mc")) t.mc = positive(*v);
-  if (auto v = node.find("dc")) t.dc = positive(*v);
-  if (auto v = node.find("tc")) t.tc = positive(*v);
+  if (auto v = node.find("mc")) t.mc = v->positive();
+  if (auto v = node.find("dc")) t.dc = v->positive();
+  if (auto v = node.find("tc")) t.tc = v->positive();
   if (auto c = node.find("combine")) {
     const std::string g = c->one_of({"mean", "geometric", "max"});
     t.combine = g == "mean"        ? Tessellation::Combine::kMean
@@ -133,12 +127,13 @@ void parse_nurbs_object(const JsonNode& node, Object& o) {
   if (auto surface = node.find("surface")) {
     if (node.has("patches")) node.at("patches").fail("give either surface or patches");
     const std::string kind = surface->one_of({"sphere", "torus", "cylinder"});
-    const double radius = node.has("radius") ? positive(node.at("radius")) : 1.0;
+    const double radius = node.has("radius") ? node.at("radius").positive() : 1.0;
     if (kind == "sphere") o.patches = {nurbs::sphere(radius)};
     if (kind == "torus")
-      o.patches = {nurbs::torus(radius, node.has("tube") ? positive(node.at("tube")) : 0.25)};
+      o.patches = {nurbs::torus(radius, node.has("tube") ? node.at("tube").positive() : 0.25)};
     if (kind == "cylinder")
-      o.patches = {nurbs::cylinder(radius, node.has("height") ? positive(node.at("height")) : 2.0)};
+      o.patches = {
+          nurbs::cylinder(radius, node.has("height") ? node.at("height").positive() : 2.0)};
   } else {
     for (std::string_view key : {"radius", "tube", "height"}) {
       if (auto k = node.find(key)) k->fail("applies to a surface (sphere, torus, cylinder) only");
@@ -176,7 +171,7 @@ void parse_tau(const JsonNode& node, Material& m) {
       t->allow_keys({"map", "amplitude", "frequency", "cells", "interpolation"});
       tau.kind = nurbs::TauMap::Kind::kWave;
       if (auto a = t->find("amplitude")) tau.amplitude = a->number();
-      if (auto f = t->find("frequency")) tau.frequency = positive(*f);
+      if (auto f = t->find("frequency")) tau.frequency = f->positive();
     } else {
       t->allow_keys({"map", "nodes", "interpolation"});
       tau.kind = nurbs::TauMap::Kind::kGrid;

@@ -26,12 +26,6 @@ glm::dvec3 positive3(const JsonNode& node) {
   return v;
 }
 
-double positive(const JsonNode& node) {
-  const double v = node.number();
-  if (!(v > 0)) node.fail("must be > 0");
-  return v;
-}
-
 glm::ivec2 segments(const JsonNode& node, int min_first, int min_second) {
   node.expect_array();
   if (node.size() != 2) node.fail("expected a list of 2 integers");
@@ -69,13 +63,13 @@ Object parse_object(const JsonNode& node, const std::vector<Material>& materials
   } else if (type == "sphere") {
     node.allow_keys({"type", "material", "transform", "uv_repeat", "radius", "segments"});
     o.shape = Object::Shape::kSphere;
-    if (auto r = node.find("radius")) o.radius = positive(*r);
+    if (auto r = node.find("radius")) o.radius = r->positive();
     if (auto s = node.find("segments")) o.segments = segments(*s, 3, 2);
   } else if (type == "torus") {
     node.allow_keys({"type", "material", "transform", "uv_repeat", "radius", "tube", "segments"});
     o.shape = Object::Shape::kTorus;
-    if (auto r = node.find("radius")) o.radius = positive(*r);
-    if (auto t = node.find("tube")) o.tube = positive(*t);
+    if (auto r = node.find("radius")) o.radius = r->positive();
+    if (auto t = node.find("tube")) o.tube = t->positive();
     if (auto s = node.find("segments")) o.segments = segments(*s, 3, 3);
   } else {
     node.allow_keys({"type", "material", "transform", "uv_repeat", "file"});

@@ -134,8 +134,8 @@ CosimResult run_cosim(const Block& block, const CosimOptions& o, std::ostream& l
             dump_waveform(*make("rtl"), items, run_opt, fail_cycle, o.wave_before, o.wave_after,
                           o.wave_dir, block.name() + "_mismatch", block.ports());
         res.wave_path = w.fst;
-        fmt::print(log, "  waveform: {} (cycles {}..{}); view: gtkwave {}\n", w.fst, w.begin,
-                   w.end, w.gtkw);
+        fmt::print(log, "  waveform: {} (cycles {}..{}); view: gtkwave {}\n", w.fst, w.begin, w.end,
+                   w.gtkw);
       } catch (const std::exception& e) {  // a model without tracing (a mutant)
         fmt::print(log, "  waveform: none ({})\n", e.what());
       }

@@ -110,8 +110,9 @@ class RtlSim {
       if constexpr (Traced<Model>) {
         m_->trace(fst_.get(), 99);
       } else {
-        throw std::runtime_error("this model was built without waveforms (rtl/CMakeLists.txt: "
-                                 "the mutants are)");
+        throw std::runtime_error(
+            "this model was built without waveforms (rtl/CMakeLists.txt: "
+            "the mutants are)");
       }
     }
     if constexpr (Clocked<Model>) m_->clk_i = 0;
