@@ -15,6 +15,7 @@
 #include "common/error.hpp"
 #include "common/image.hpp"
 #include "footprint/footprint_ideal.hpp"
+#include "render/chip_stage.hpp"
 #include "render/effect_chain.hpp"
 #include "render/procedural_chain.hpp"
 #include "render/tau_stage.hpp"
@@ -90,7 +91,8 @@ uint32_t rgba_of(const glm::dvec4& c) {
   return texram::rgba(ch(c.r), ch(c.g), ch(c.b), ch(c.a));
 }
 
-Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level_(level) {
+Pipeline::Pipeline(const host::Scene& scene, Level level, int chips)
+    : scene_(scene), level_(level) {
   for (size_t m = 0; m < scene.materials.size(); ++m) {
     const host::Material& mat = scene.materials[m];
     const std::string field = "materials." + mat.name + ".texture";
@@ -129,6 +131,9 @@ Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level
     }
     if (mat.uses_normal()) mt.effects = build_effect_maps(scene, mat);
     textures_.push_back(std::move(mt));
+  }
+  if (chips > 0 && level != Level::kIdeal) {
+    chips_ = std::make_shared<ChipStage>(scene, textures_, chips);
   }
 }
 
@@ -284,10 +289,27 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
       continue;
     }
 
+    ChipStage* chip = chips_ && chips_->samples(m) ? chips_.get() : nullptr;
     if (mat.uses_normal()) {
-      for (const HostWork& w : effect_chain_host_work(mat, tex.effects)) note_host_work(w);
+      for (const HostWork& w : effect_chain_host_work(mat, tex.effects, chip != nullptr))
+        note_host_work(w);
+      const std::vector<uint32_t> rgba = run_effect_chain(
+          {scene_, mat, tex, level_, records, frags, chip, m}, units_, fragment_of_output_);
+      for (size_t k = 0; k < frags.size(); ++k) out[frags[k]] = rgba[k];
+      done += frags.size();
+      if (progress) progress(done, records.size());
+      continue;
+    }
+    if (chip) {  // one parameter a pixel: the texture's request (from the tau unit in order pc)
+      const std::vector<host::FragmentRecord> tau =
+          pc ? run_tau(mat, tex.size, records, frags, level_, units_, fragment_of_output_)
+             : std::vector<host::FragmentRecord>{};
+      const std::vector<host::FragmentRecord>& at = pc ? tau : records;
+      std::vector<std::vector<texram::chip::PixelParameter>> params;
+      for (size_t i : frags)
+        params.push_back({{1, {at[i].u, at[i].v, at[i].lambda, records[i].shade}}});
       const std::vector<uint32_t> rgba =
-          run_effect_chain({scene_, mat, tex, level_, records, frags}, units_, fragment_of_output_);
+          chip->run_pass(m, 0, std::move(params), frags, level_, units_, fragment_of_output_);
       for (size_t k = 0; k < frags.size(); ++k) out[frags[k]] = rgba[k];
       done += frags.size();
       if (progress) progress(done, records.size());
