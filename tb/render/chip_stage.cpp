@@ -47,11 +47,16 @@ std::vector<uint32_t> ChipStage::run_pass(
   const MaterialProgram& prog = programs_.materials[m];
   const auto chip = static_cast<size_t>(prog.chip);
   const ChipProgram& program = programs_.chips[chip];
-  if (!memories_[chip]) {
-    std::vector<tb::ChipMapPlacement> maps;
-    for (const ChipMap& c : program.maps) maps.push_back({{}, c.texture, c.base});
-    memories_[chip] = std::make_shared<const tb::ChipScene>(
-        tb::chip_scene_of(maps, program.clut.value_or(texram::Clut32{})));
+  std::shared_ptr<const tb::ChipScene> memory;
+  {
+    const std::lock_guard<std::mutex> lock(memories_mutex_);
+    if (!memories_[chip]) {
+      std::vector<tb::ChipMapPlacement> maps;
+      for (const ChipMap& c : program.maps) maps.push_back({{}, c.texture, c.base});
+      memories_[chip] = std::make_shared<const tb::ChipScene>(
+          tb::chip_scene_of(maps, program.clut.value_or(texram::Clut32{})));
+    }
+    memory = memories_[chip];
   }
 
   UnitRun unit;
@@ -59,7 +64,7 @@ std::vector<uint32_t> ChipStage::run_pass(
   unit.material = scene_.materials[m].name;
   unit.role = prog.passes.size() > 1 && pass == 0 ? "bump" : "";
   const auto block =
-      std::make_shared<tb::TexramChipBlock>(tb::BlockOptions{}, memories_[chip], program.drfs);
+      std::make_shared<tb::TexramChipBlock>(tb::BlockOptions{}, memory, program.drfs);
   attach(unit, block);
   unit.items = block->setup_items();  // the CLUT and the chip's DRF program
   for (std::vector<texram::chip::PixelParameter>& pixel : params) {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,7 @@ class ChipStage {
   ScenePrograms programs_;
   std::vector<std::string> why_not_;
   std::vector<std::shared_ptr<const tb::ChipScene>> memories_;  // per chip, when first used
+  std::mutex memories_mutex_;  // materials shade on several threads (Pipeline::set_jobs)
 };
 
 // For the report, per material of `scene`: "NAME: chip C, DRF 1 | 2 -> 3" (a pass ends at "|"),

@@ -78,6 +78,9 @@ class Pipeline {
   Pipeline(const host::Scene& scene, Level level, int chips = 0);
 
   Level level() const { return level_; }
+  // How many materials shade() runs at once, each on its own thread with its own engines
+  // (default 1). An hls run stays serial: each SystemC run is a forked child.
+  void set_jobs(int jobs) { jobs_ = level_ == Level::kHls ? 1 : jobs; }
   const ChipStage* chips() const { return chips_.get(); }  // null without chips
   const std::vector<MaterialTexture>& textures() const { return textures_; }
   std::vector<glm::ivec2> texture_sizes() const;
@@ -113,8 +116,15 @@ class Pipeline {
  private:
   const host::Scene& scene_;
   Level level_;
+  // What shading one material built: its units in order, their outputs' fragments, host work.
+  struct MaterialWork {
+    std::vector<UnitRun> units;
+    std::vector<std::vector<size_t>> outputs_of;
+    std::vector<HostWork> host_work;
+  };
   // The mipgen units of material m: its texture's levels written by the generator.
-  void generate_mipmaps(size_t m);
+  void generate_mipmaps(size_t m, MaterialWork& work);
+  int jobs_ = 1;
 
   std::vector<MaterialTexture> textures_;
   std::vector<UnitRun> units_;

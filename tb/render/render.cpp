@@ -108,6 +108,7 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
 
   auto t = Clock::now();
   Pipeline pipe(scene, o.level, o.chips);
+  pipe.set_jobs(o.jobs);
   rep.textures_s = since(t);
   if (const ChipStage* chips = pipe.chips()) rep.chips = chip_lines(scene, *chips);
 
@@ -188,6 +189,7 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
   // Bit for bit against another engine, fragment by fragment.
   if (o.check) {
     Pipeline ref(scene, *o.check, o.chips);
+    ref.set_jobs(o.jobs);
     // Its own vertex units, for the unit check (the pixels compare on this run's fragments).
     if (samples_at_vertices_anywhere(scene))
       front_end(scene, ref, band.row_begin, band.row_end, nullptr);

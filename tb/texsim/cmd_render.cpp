@@ -3,6 +3,7 @@
 
 #include <iostream>
 #include <memory>
+#include <thread>
 
 #include "common/error.hpp"
 #include "common/image.hpp"
@@ -61,6 +62,12 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
                   "texram_chip unit; the report lists\nthe materials that stay on separate units "
                   "and why (0: every map its own unit)")
       ->check(CLI::Range(0, 64))
+      ->capture_default_str();
+  a->options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  cmd->add_option("--jobs", a->options.jobs,
+                  "Materials shaded at once, each on its own thread with its own models (the "
+                  "image and report\nare the same for any number; hls runs one at a time)")
+      ->check(CLI::Range(1, 256))
       ->capture_default_str();
   cmd->add_flag("--no-progress", a->no_progress, "No progress bar");
   cmd->callback([a, &exit_code] {
