@@ -1,11 +1,13 @@
 #include "footprint/fast_footprint.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <stdexcept>
 #include <string>
 
 #include "formats/formats.hpp"
+#include "texram/rgba_lanes.hpp"
 
 namespace tmu::footprint {
 namespace {
@@ -28,13 +30,6 @@ int32_t fast_to_port(int64_t raw, texram::Border border) {
                                 (64 - kW));
   }
   return static_cast<int32_t>(std::clamp(raw, kMin, kMax));
-}
-
-// RGBA8888 in four 16-bit lanes (R 63:48 .. A 15:0): 16 colours sum without carries.
-inline uint64_t fast_spread16(uint32_t c) {
-  uint64_t x = c;
-  x = (x | x << 16) & 0x0000FFFF0000FFFFull;
-  return (x | x << 8) & 0x00FF00FF00FF00FFull;
 }
 
 }  // namespace
@@ -119,31 +114,29 @@ Plan FastFootprint::plan(const Request& r) const {
 
 uint32_t FastFootprint::sample(const Request& r) const {
   const Plan p = plan(r);
-  const texram::FastLevels levels = unit_.levels(p.lambda);
   const texram::SamplerConfig& sampler = unit_.config();
-  const int k = p.log2_n;
+  const int k = p.log2_n, n = 1 << k;
   const int64_t du = p.r2_longer ? r.r2u : r.r1u;
   const int64_t dv = p.r2_longer ? r.r2v : r.r1v;
   // Probe i at ((c << (k + 1)) + n d + 2^k) >> (k + 1), n = 2i - (N - 1): n steps by 2.
-  const int64_t first_n = 1 - (int64_t{1} << k);
+  const int64_t first_n = 1 - int64_t{n};
   int64_t pu = (int64_t{r.u} << (k + 1)) + first_n * du + (int64_t{1} << k);
   int64_t pv = (int64_t{r.v} << (k + 1)) + first_n * dv + (int64_t{1} << k);
-  texram::Request q;
-  q.lambda = p.lambda;
-  q.shade = r.shade;
-  uint64_t sum = 0;
-  for (int i = 0; i < (1 << k); ++i) {
-    q.u = fast_to_port(pu >> (k + 1), sampler.border_u);
-    q.v = fast_to_port(pv >> (k + 1), sampler.border_v);
-    sum += fast_spread16(unit_.sample_at(levels, q));
+  std::array<int32_t, kMaxProbes> u, v;
+  for (int i = 0; i < n; ++i) {
+    u[static_cast<size_t>(i)] = fast_to_port(pu >> (k + 1), sampler.border_u);
+    v[static_cast<size_t>(i)] = fast_to_port(pv >> (k + 1), sampler.border_v);
     pu += 2 * du;
     pv += 2 * dv;
   }
+  std::array<uint32_t, kMaxProbes> colours;
+  unit_.sample_points(unit_.levels(p.lambda), u.data(), v.data(), n, r.shade, colours.data());
+  // The colours summed in 16-bit lanes: at most 16 * 255 + 8 < 2^16.
+  uint64_t sum = 0;
+  for (int i = 0; i < n; ++i) sum += texram::spread16(colours[static_cast<size_t>(i)]);
   // (sum + N/2) >> k per lane; bits shifted in from the lane above land above bit 7.
   const uint64_t half = k > 0 ? uint64_t{1} << (k - 1) : 0;
-  const uint64_t avg = ((sum + half * 0x0001000100010001ull) >> k) & 0x00FF00FF00FF00FFull;
-  return static_cast<uint32_t>((avg >> 48) << 24 | (avg >> 32 & 0xFF) << 16 |
-                               (avg >> 16 & 0xFF) << 8 | (avg & 0xFF));
+  return texram::pack16((sum + half * 0x0001000100010001ull) >> k);
 }
 
 void FastFootprint::sample_batch(std::span<const Request> requests, std::span<uint32_t> out) const {

@@ -8,13 +8,16 @@
 // - The log2 table is built once (the golden evaluates an entry's digit recurrence per call).
 // - The level choice of the fragment's lambda is made once for all its probes.
 // - Probe positions step by 2 r from the first, and the average is summed in 16-bit lanes.
+// - The probes go to the trilinear unit's loop in one call per fragment.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "footprint/footprint.hpp"
+#include "formats/formats.hpp"
 #include "texram/fast_trilinear.hpp"
 
 namespace tmu::footprint {
@@ -33,6 +36,7 @@ class FastFootprint {
   void sample_batch(std::span<const Request> requests, std::span<uint32_t> out) const;
 
  private:
+  static constexpr size_t kMaxProbes = size_t{1} << formats::kMaxProbeLog2;
   int64_t lg(uint64_t x) const;  // log2_fixed's value for x > 0
 
   texram::FastTrilinear unit_;

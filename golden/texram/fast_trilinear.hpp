@@ -10,11 +10,18 @@
 //   look-up, single component, CCC decode) in a plain row-major array, instead of eight bank
 //   reads and a conversion per tap. The array has a one-texel margin holding the border
 //   colour, so border mode is a clamp to [-1, n] and an outside tap reads the margin.
-// - The blend is exact integer arithmetic in SWAR lanes of a 64-bit word: a row's two taps
-//   in four 16-bit lanes (each <= 255 * 2^W), then rows and the level weight in two words of
-//   two 32-bit lanes (each <= 255 * 2^3W < 2^32), rounded once as the golden rounds.
+// - The blend is exact integer arithmetic in SWAR lanes of a 64-bit word (rgba_lanes.hpp): a
+//   row's two taps in four 16-bit lanes (each <= 255 * 2^W), then rows and the level weight in
+//   two words of two 32-bit lanes (each <= 255 * 2^3W < 2^32), rounded once as the golden
+//   rounds. The arrays hold each texel already spread to 16-bit lanes (8 bytes a texel: the
+//   256 x 256 pyramid is 0.7 MB and still fits the L2 cache here).
 // - Per-level shifts and sizes are precomputed; no range checks, no std::optional, no throws
 //   on the sample path (the configuration is checked once, in the constructor).
+// - The sample loop is compiled once per border mode pair, for nearest or bi/trilinear, and
+//   for the default widths (all 8: constant shifts) or any: the constructor picks the loop,
+//   and a batch pays one indirect call. The work per sample is arithmetic (requests confined
+//   to a few texels, always in L1, run no faster): branches on the configuration and variable
+//   shifts cost a third of it.
 //
 // The prepared texture assumes that the replica cells of levels narrower than two grid cells
 // hold the same bytes as the cells they replicate, as every constructor of TexramTexture
@@ -30,7 +37,6 @@
 #include "texram/layout.hpp"
 #include "texram/sampler_config.hpp"
 #include "texram/texture.hpp"
-#include "texram/trilinear.hpp"
 
 namespace tmu::texram {
 
@@ -49,42 +55,50 @@ class FastTrilinear {
   // config.single_channel, the margin on config.border_rgba). Throws std::invalid_argument
   // on widths outside 1..8 or replica cells that differ.
   FastTrilinear(const TexramTexture& texture, const SamplerConfig& config);
-  FastTrilinear(const FastTrilinear&) = delete;  // levels_ point into texels_
+  FastTrilinear(const FastTrilinear&) = delete;  // level_ points into texels_
   FastTrilinear& operator=(const FastTrilinear&) = delete;
   FastTrilinear(FastTrilinear&&) = default;  // the vector's buffer moves with it
   FastTrilinear& operator=(FastTrilinear&&) = default;
 
   // texram::sample(texture, config, request), without the plan.
   uint32_t sample(const Request& request) const {
-    return sample_at(levels(request.lambda), request);
+    uint32_t out = 0;
+    batch_(*this, std::span(&request, 1), std::span(&out, 1));
+    return out;
   }
   // Every request in order; out.size() must be requests.size().
   void sample_batch(std::span<const Request> requests, std::span<uint32_t> out) const;
 
-  // The two halves of sample(), for callers that sample many points at one lambda.
+  // The level choice of a lambda, and n points sampled at it with one shade (a footprint's
+  // probes: port coordinates u[i], v[i]; out[i] = texram::sample of (u[i], v[i], lambda, shade)).
   FastLevels levels(int32_t lambda) const;
-  uint32_t sample_at(const FastLevels& levels, const Request& request) const;
+  void sample_points(const FastLevels& levels, const int32_t* u, const int32_t* v, int n,
+                     uint32_t shade, uint32_t* out) const {
+    points_(*this, levels, u, v, n, shade, out);
+  }
 
   const SamplerConfig& config() const { return config_; }
 
  private:
   // A prepared level: texel (x, y) at origin[y * stride + x], x in -1..w, y in -1..h.
   struct Level {
-    const uint32_t* origin = nullptr;
+    const uint64_t* origin = nullptr;  // texels in 16-bit lanes (rgba_lanes.hpp: spread16)
     int64_t stride = 0;
     int64_t w = 0, h = 0;
     int coord_drop = 0;  // port fraction bits above S at this level: 8 - S + level
   };
-
-  uint32_t bilinear(const FastLevels& levels, int32_t u, int32_t v) const;
-  uint32_t nearest(int level, int32_t u, int32_t v) const;
-  uint32_t combine_fast(uint32_t t, uint32_t shade) const;
+  struct Kernels;  // the sample loops, one per configuration class (fast_trilinear.cpp)
+  using BatchFn = void (*)(const FastTrilinear&, std::span<const Request>, std::span<uint32_t>);
+  using PointsFn = void (*)(const FastTrilinear&, const FastLevels&, const int32_t*, const int32_t*,
+                            int, uint32_t, uint32_t*);
 
   SamplerConfig config_;
   Geometry geometry_;  // the sizes sphere addressing scales to
   int top_ = 0;
-  std::vector<uint32_t> texels_;
+  std::vector<uint64_t> texels_;
   std::array<Level, kMaxLevels> level_{};
+  BatchFn batch_ = nullptr;
+  PointsFn points_ = nullptr;
 };
 
 }  // namespace tmu::texram
