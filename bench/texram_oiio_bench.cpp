@@ -1,7 +1,9 @@
-// The golden trilinear unit and footprint assembly against the library a user would pick
-// instead: OpenImageIO's TextureSystem, on the same texels and the same requests, one thread.
-// Prints each rate, its ratio against OIIO measured in the same run, and how far apart the two
-// answers are (mean and max absolute difference per channel, 8-bit levels).
+// The golden trilinear unit and footprint assembly, scalar and fast, against the library a user
+// would pick instead: OpenImageIO's TextureSystem, on the same texels and the same requests, one
+// thread. Prints each rate, its ratio against OIIO measured in the same run, and how far apart
+// the golden and OIIO answers are (mean and max absolute difference per channel, 8-bit levels).
+// The fast path's answers are checked equal to the scalar golden's on every request before
+// anything is timed (the fixture throws otherwise).
 //   build/bench/tmu_texram_oiio_bench [--benchmark_filter=...]
 //
 // The texture: patterns::default_image(256, 256), true colour, wrap on both axes. OIIO reads our
@@ -13,6 +15,9 @@
 //   generation (levels, weights, border operators, bank addresses), one read per bank and byte
 //   plane, the fixed-point blend, eq. 5's combine (multiply by one); the footprint setup
 //   (block-floating derivatives, log2 tables) and the average of its probes.
+// - fast golden: FastTrilinear / FastFootprint::sample_batch over the same requests, the same
+//   arithmetic on the texture prepared once (outside the timing: texram/fast_trilinear.hpp),
+//   writing every result to an array; no memory plan.
 // - OIIO: TextureSystem::texture() through a texture handle and this thread's Perthread record
 //   (no file-name lookup), its tile-cache lookups (every tile resident: the cache is warmed
 //   outside the timed loop), its float pipeline on texels stored as float, its statistics.
