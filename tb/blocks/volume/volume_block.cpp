@@ -314,11 +314,13 @@ Ray draw_ray(std::mt19937_64& rng, const VolumeSetup& s) {
     }
     if (r.step[axis] == 0) r.step[axis] = rng() % 2 ? kOne : -kOne;
   }
-  const uint64_t c = rng() % 128;
-  r.count = c == 0   ? 0
-            : c < 8  ? 1
-            : c == 8 ? static_cast<uint32_t>(uniform(rng, 100, 600))
-                     : static_cast<uint32_t>(uniform(rng, 2, 12));
+  // Short rays mostly (a location's cases are what varies; the drift's long rays are
+  // directed), now and then one of a few hundred resamples.
+  const uint64_t c = rng() % 256;
+  r.count = c == 0    ? 0
+            : c < 24  ? 1
+            : c == 24 ? static_cast<uint32_t>(uniform(rng, 60, 300))
+                      : static_cast<uint32_t>(uniform(rng, 2, 7));
   return r;
 }
 
