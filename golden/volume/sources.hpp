@@ -20,6 +20,8 @@ namespace tmu::volume {
 
 double marschner_lobb(double x, double y, double z);  // f in [0, 1]
 VoxelGrid marschner_lobb_grid(uint32_t n);
+// The same field on an X x Y x Z grid, each axis over [-1, 1] (voxel i at -1 + 2 i / (n - 1)).
+VoxelGrid marschner_lobb_grid(uint32_t nx, uint32_t ny, uint32_t nz);
 
 VoxelGrid sphere_grid(uint32_t nx, uint32_t ny, uint32_t nz, double radius, double slope);
 // The sphere's centre in voxel coordinates for that grid.
