@@ -23,6 +23,7 @@ struct RenderOptions {
   std::string save_trace;      // write the fragment records here
   std::string replay_trace;    // take the fragment records from here instead of the front end
   int inject_fault = -1;       // flip a bit of this fragment's result (proves --check catches it)
+  std::optional<int> chips;    // a volume scene: its slabs over this many chips (its own key else)
 };
 
 // Renders; prints the text report to `log` and writes the files into out_dir. Returns the exit

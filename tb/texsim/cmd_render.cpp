@@ -10,7 +10,9 @@
 #include "render/flyover.hpp"
 #include "render/render.hpp"
 #include "render/tiles.hpp"
+#include "render/volume_render.hpp"
 #include "texsim/commands.hpp"
+#include "volume/volume_scene.hpp"
 
 namespace tmu::texsim {
 
@@ -20,10 +22,13 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
       "Render a scene (scenes/README.md) through the texture unit: the host front end rasterizes "
       "it, every\n"
       "fragment goes through the units its material's chain calls for, at the chosen model level.\n"
-      "Writes OUT/render.png (and render.exr for ideal) and OUT/render.report.{json,txt}.");
+      "Writes OUT/render.png (and render.exr for ideal) and OUT/render.report.{json,txt}.\n"
+      "A volume scene (a \"volume\" section) is ray-cast through the volume unit (000 §13) at "
+      "ideal or golden.");
   struct Args {
     std::string scene, engine = "golden", check, compare, tile, frames;
     bool waveform = false, no_progress = false;
+    int chips = 0;
     render::RenderOptions options;
   };
   auto a = std::make_shared<Args>();
@@ -55,6 +60,10 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
   cmd->add_option("--frames", a->frames,
                   "A fly-over scene (a \"flyover\" section, render/flyover.hpp): the frames A-B "
                   "(default every frame of its path)");
+  cmd->add_option("--chips", a->chips,
+                  "A volume scene (a \"volume\" section, docs/volume.md): its volume in this many "
+                  "slabs, one a chip (default the scene's \"chips\", else 1)")
+      ->check(CLI::Range(1, 64));
   cmd->add_flag("--no-progress", a->no_progress, "No progress bar");
   cmd->callback([a, &exit_code] {
     load_oiio_plugin();  // before the report's clock starts
@@ -65,6 +74,13 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
     o.waveform = a->waveform;
     o.progress = !a->no_progress;
     if (!a->tile.empty()) std::tie(o.tile, o.tiles) = render::parse_tile(a->tile);
+    if (a->chips > 0) o.chips = a->chips;
+    if (host::is_volume_scene(a->scene)) {
+      if (!a->frames.empty()) throw InputError(a->scene, "", "--frames is for a fly-over scene");
+      exit_code.value = render::render_volume(a->scene, o, std::cout);
+      return;
+    }
+    if (o.chips) throw InputError(a->scene, "", "--chips is for a volume scene");
     if (render::is_flyover(a->scene)) {
       render::FrameRange range;
       if (!a->frames.empty()) {
