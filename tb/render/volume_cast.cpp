@@ -86,11 +86,20 @@ VolumeFrame cast_volume(const host::VolumeScene& scene, const std::vector<volume
       const host::RaySetup& r = rays[p];
       const uint32_t first = next[p];
       const auto n = static_cast<uint32_t>(std::min<uint64_t>(segment, r.count - first));
-      for (const host::ChipRun& run : host::split_by_chip(f.plan, r.ray, first, n)) {
-        commands[run.chip].push_back({host::chip_ray(f.plan, run.chip, r.ray, run.first, run.count),
-                                      r.start, r.step, run.first});
-        runs.push_back({p, run.chip, issued_per_chip[run.chip], run.first, run.count});
-        issued_per_chip[run.chip] += run.count;
+      if (o.level == Level::kIdeal) {
+        // The real ray's locations first .. first + n - 1; the quantised ray is not read (nor
+        // split by the unit's corner rule: the ideal shares no arithmetic with golden).
+        commands[0].push_back({volume::Ray{{}, {}, n}, r.start, r.step, first});
+        runs.push_back({p, 0, issued_per_chip[0], first, n});
+        issued_per_chip[0] += n;
+      } else {
+        for (const host::ChipRun& run : host::split_by_chip(f.plan, r.ray, first, n)) {
+          commands[run.chip].push_back(
+              {host::chip_ray(f.plan, run.chip, r.ray, run.first, run.count), r.start, r.step,
+               run.first});
+          runs.push_back({p, run.chip, issued_per_chip[run.chip], run.first, run.count});
+          issued_per_chip[run.chip] += run.count;
+        }
       }
       next[p] = first + n;
       f.issued += n;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -170,7 +171,7 @@ void sweep_volume(const VolumeSweepArgs& args) {
   if (!args.out_dir.empty()) std::filesystem::create_directories(args.out_dir);
 
   // The patent's data sets per step (they do not depend on W).
-  std::map<double, PatentTimes> patent;
+  std::map<double, PatentTimes, std::greater<>> patent;  // step 1, the patent's case, first
   for (const Setting& s : settings) {
     if (patent.count(s.step) || (args.quick && s.step != 1)) continue;
     patent[s.step] = {run_patent_set(patent_set(true, s.step)),
