@@ -72,6 +72,14 @@ SlabPlan plan_slabs(const std::array<uint32_t, 3>& size, int chips, int axis, vo
   return make_slab_plan(size, chips, axis, mode);
 }
 
+SlabPlan whole_volume(const std::array<uint32_t, 3>& size, int axis) {
+  SlabPlan p;
+  p.axis = axis;
+  p.planes = size[static_cast<size_t>(axis)];
+  p.slabs.push_back({0, p.planes, 0, p.planes});
+  return p;
+}
+
 volume::VoxelGrid slab_grid(const volume::VoxelGrid& whole, const SlabPlan& plan, size_t chip) {
   const Slab& s = plan.slabs.at(chip);
   std::array<uint32_t, 3> n = {whole.nx, whole.ny, whole.nz};

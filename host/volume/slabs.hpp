@@ -52,6 +52,9 @@ std::string slab_problem(const std::array<uint32_t, 3>& size, int chips, int axi
 // Throws std::invalid_argument with slab_problem's reason.
 SlabPlan plan_slabs(const std::array<uint32_t, 3>& size, int chips, int axis, volume::Mode mode);
 
+// The whole volume as one slab, whatever its size (the ideal's, which has no banks to fit).
+SlabPlan whole_volume(const std::array<uint32_t, 3>& size, int axis);
+
 // Chip k's voxels: the planes it holds, renumbered from 0.
 volume::VoxelGrid slab_grid(const volume::VoxelGrid& whole, const SlabPlan& plan, size_t chip);
 

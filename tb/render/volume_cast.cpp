@@ -50,8 +50,10 @@ VolumeFrame cast_volume(const host::VolumeScene& scene, const std::vector<volume
   f.width = scene.camera.width;
   f.height = scene.camera.height;
   const volume::Mode mode = host::volume_mode(scene);
-  const int chips = o.level == Level::kIdeal ? 1 : o.chips;
-  f.plan = host::plan_slabs(scene.data.size, chips, scene.slab_axis, mode);
+  const int chips = o.level == Level::kIdeal ? 1 : o.chips;  // the ideal: no banks, no slabs
+  f.plan = o.level == Level::kIdeal
+               ? host::whole_volume(scene.data.size, scene.slab_axis)
+               : host::plan_slabs(scene.data.size, chips, scene.slab_axis, mode);
   const volume::Config config{mode, scene.weight_bits};
   std::vector<std::vector<std::unique_ptr<VolumeUnitEngine>>> engines(f.plan.slabs.size());
   for (size_t c = 0; c < engines.size(); ++c) {
