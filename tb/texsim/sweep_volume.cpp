@@ -164,7 +164,12 @@ void sweep_volume(const VolumeSweepArgs& args) {
                                : args.scene;
   host::VolumeScene base = host::load_volume_scene(path);
   base.termination.reset();  // every location: the errors compare resample for resample
-  base.chips = 1;
+  base.chips = 1;  // one chip: golden's resamples in the ideal's order, compared one by one
+  if (const std::string why =
+          host::slab_problem(base.data.size, 1, base.slab_axis, host::volume_mode(base));
+      !why.empty()) {
+    throw InputError(path, "volume.data.size", "the sweep renders on one chip: " + why);
+  }
   if (args.quick) base.camera.width = base.camera.height = 48;
   const std::vector<volume::VoxelGrid> grids = host::volume_grids(base);
   const bool raw = base.format == host::VolumeFormat::kRaw;
