@@ -60,13 +60,14 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
   cmd->add_option("--frames", a->frames,
                   "A fly-over scene (a \"flyover\" section, render/flyover.hpp): the frames A-B "
                   "(default every frame of its path)");
-  cmd->add_option("--chips", a->options.chips,
-                  "TEXRAM chips (000 §14). A surface scene: its materials' maps sampled on them, each "
-                  "material compiled\nto DRFs (texsim drf shows them), its maps and specular "
-                  "combine one texram_chip unit; the report\nlists the materials that stay on "
-                  "separate units and why (0: every map its own unit). A volume scene\n(docs/"
-                  "volume.md): its volume in this many slabs, one a chip (0: the scene's \"chips\", "
-                  "else 1)")
+  cmd->add_option(
+         "--chips", a->options.chips,
+         "TEXRAM chips (000 §14). A surface scene: its materials' maps sampled on them, each "
+         "material compiled\nto DRFs (texsim drf shows them), its maps and specular "
+         "combine one texram_chip unit; the report\nlists the materials that stay on "
+         "separate units and why (0: every map its own unit). A volume scene\n(docs/"
+         "volume.md): its volume in this many slabs, one a chip (0: the scene's \"chips\", "
+         "else 1)")
       ->check(CLI::Range(0, 64))
       ->capture_default_str();
   a->options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
