@@ -489,6 +489,7 @@ tmu_mutant(tau unreset FILE tau/tmu_tau.sv EXPECT x-leak
 
 
 # The TEXRAM chip (000 §14): seven linked DRFs, the trilinear unit on each map at its base,
+# footprint assembly (§10) and detail maps (§9) per DRF,
 # eq. 6-7 per pixel (`texsim cosim texram_chip`; docs/texram_chip.md "The chip block").
 tmu_block(texram_chip)
 tmu_mutant(texram_chip base FILE texram/tmu_texram_step.sv
@@ -506,18 +507,9 @@ tmu_mutant(texram_chip reset FILE texram/tmu_texram_drf_file.sv
 tmu_mutant(texram_chip fp_round FILE footprint/tmu_footprint_average.sv
   FROM "(SumW'(1 << head_k) >> 1)" TO "SumW'(0)"
   WHY "footprint assembly's average truncates instead of rounding half up (colours one level low)")
-tmu_mutant(texram_chip fp_limit FILE texram/tmu_texram_step.sv
-  FROM "3'(tmu_pkg::MaxProbeLog2) : log2_max_probes_i" TO "3'(tmu_pkg::MaxProbeLog2 - 1) : log2_max_probes_i"
-  WHY "a probe limit of 5..7 acts as 8 probes, not golden's 16 (fewer probes, other lambda)")
 tmu_mutant(texram_chip detail_level FILE texram/tmu_texram_detail.sv
   FROM "lambda_d = in_lambda_i + (Level <<< 2);" TO "lambda_d = in_lambda_i + Level * 3;"
   WHY "the detail map is read one level too fine (lambda + 3, not + 4)")
-tmu_mutant(texram_chip detail_vbase FILE texram/tmu_texram_detail.sv
-  FROM "rd_base_add_o = v_distance;" TO "rd_base_add_o = '0;"
-  WHY "the v offsets are read from the u-offset map (the v map's base not added)")
-tmu_mutant(texram_chip detail_modulate FILE texram/tmu_texram_detail.sv
-  FROM "assign need_texel  = modulate_i || wt_q != '0;" TO "assign need_texel  = wt_q != '0;"
-  WHY "modulate skips the texture's texel at lambda <= -1 (one access less, the detail colour times 0)")
 tmu_mutant(texram_chip unreset FILE texram/tmu_texram_chip.sv EXPECT x-leak
   FROM "      pixels_q    <= '0;\n" TO ""
   WHY "the pixel counter starts where its flops happen to be")

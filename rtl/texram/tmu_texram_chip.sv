@@ -204,7 +204,7 @@ module tmu_texram_chip (
 
   // DRF n's link; 0 for n = 0 (no DRF).
   function automatic tmu_pkg::drf_index_t link_of(tmu_pkg::drf_index_t n);
-    return n == '0 ? '0 : links[(32'(n) - 1)*LinkW +: LinkW];
+    link_of = n == '0 ? '0 : links[(32'(n) - 1)*LinkW +: LinkW];
   endfunction
 
   // A detail map's offsets DRF (the link) and detail DRF (its link), and where the chain goes

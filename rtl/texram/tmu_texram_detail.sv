@@ -144,19 +144,19 @@ module tmu_texram_detail (
   // The detail map's coordinate: the region's first texel plus 16 times the fraction, exact.
   function automatic tmu_pkg::tex_coord_t detail_coord(tmu_pkg::detail_offset_t offset,
                                                        logic [Frac-1:0] fraction);
-    return (CoordW'(offset) << Frac) + (CoordW'(fraction) << RegionLog2);
+    detail_coord = (CoordW'(offset) << Frac) + (CoordW'(fraction) << RegionLog2);
   endfunction
 
   // The v-offset map after the u map: its one-plane cells (golden Geometry::bank_cells: the
   // fuller parity's positions, level l taking 2^(max(a-l-1,0) + max(b-l-1,0))) rounded up to a
   // page (offsets_v_base).
   function automatic logic [Log2W-1:0] half_log2(tmu_pkg::mip_log2_t side, int level);
-    return 32'(side) > level + 1 ? Log2W'(32'(side) - level - 1) : '0;
+    half_log2 = 32'(side) > level + 1 ? Log2W'(32'(side) - level - 1) : '0;
   endfunction
   // log2 of level l's positions in its banks.
-  function automatic logic [Log2W:0] level_cells_log2(int level);
-    return (Log2W + 1)'(half_log2(map_log2_w_i, level)) +
-           (Log2W + 1)'(half_log2(map_log2_h_i, level));
+  function automatic logic [Log2W:0] level_cells_log2(tmu_pkg::mip_log2_t w,
+                                                      tmu_pkg::mip_log2_t h, int level);
+    level_cells_log2 = (Log2W + 1)'(half_log2(w, level)) + (Log2W + 1)'(half_log2(h, level));
   endfunction
 
   tmu_pkg::mip_log2_t  top;
@@ -169,9 +169,9 @@ module tmu_texram_detail (
     for (int l = 0; l <= tmu_pkg::MaxMipLog2; l++) begin
       if (l <= 32'(top)) begin
         if (l % 2 == 0) begin
-          used_even = used_even + (AddrW'(1) << level_cells_log2(l));
+          used_even = used_even + (AddrW'(1) << level_cells_log2(map_log2_w_i, map_log2_h_i, l));
         end else begin
-          used_odd = used_odd + (AddrW'(1) << level_cells_log2(l));
+          used_odd = used_odd + (AddrW'(1) << level_cells_log2(map_log2_w_i, map_log2_h_i, l));
         end
       end
     end

@@ -140,7 +140,7 @@ module tmu_texram_drf_file (
 
   // DRF n's registers are at slot n - 1 (DRF 0 reads slot 0).
   function automatic logic [2:0] slot_of(tmu_pkg::drf_index_t n);
-    return n == '0 ? 3'd0 : n - 3'd1;
+    slot_of = n == '0 ? 3'd0 : n - 3'd1;
   endfunction
 
   logic [2:0]          slot, ctl_slot;

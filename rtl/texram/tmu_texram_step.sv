@@ -273,7 +273,9 @@ module tmu_texram_step (
   assign tri_lambda    = eng_busy ? eng_rd_lambda : src_lambda;
   assign tri_shade     = eng_busy ? eng_rd_shade : src_shade;
 
-  assign map_drf_o      = !eng_busy ? t_i : eng_rd_map == MapO ? o_i : eng_rd_map == MapD ? d_i : t_i;
+  assign map_drf_o      = !eng_busy          ? t_i
+                        : eng_rd_map == MapO ? o_i
+                        : eng_rd_map == MapD ? d_i : t_i;
   assign map_own_base_o = eng_busy && (eng_rd_map == MapO || eng_rd_map == MapD);
   assign base           = map_base_i + (eng_busy ? eng_base_add : '0);
 

@@ -26,8 +26,9 @@ constexpr uint64_t kChipCyclesPerStep1 = 14;
 constexpr uint64_t kChipCyclesPerPixel = 3;
 // An environment sampled: the colour through tmu_specular_combine.
 constexpr uint64_t kChipCyclesCombine = 2;
-// Footprint assembly: the setup and the marcher (8), the average (1), one probe a clock.
-constexpr uint64_t kChipCyclesFootprint = 8 + 1;
+// Footprint assembly: tmu_footprint's 20 + N from request to colour against the trilinear
+// unit's 12: the setup and the marcher, the average, one probe a clock.
+constexpr uint64_t kChipCyclesFootprint = 8;
 // A detail sample: Check, Issue, 13 a read (its issue and the unit's 12), the colour's cycle.
 constexpr uint64_t kChipCyclesDetailStep = 3;
 constexpr uint64_t kChipCyclesPerRead = 13;
@@ -132,7 +133,7 @@ void expect_cycles(const TexramChipBlock& block, const DrfFile& file, const Pixe
   }
 }
 
-// A footprint step of N probes takes 9 + N cycles more than a plain step (the probes pipeline
+// A footprint step of N probes takes 8 + N cycles more than a plain step (the probes pipeline
 // through the trilinear unit, one a clock); a detail sample 3 + 13 a read (3 or 4 reads).
 TEST(TexramChipTest, CyclesOfFootprintAndDetailSteps) {
   const TexramChipBlock block({});

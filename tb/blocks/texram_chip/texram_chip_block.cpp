@@ -189,13 +189,20 @@ ChipScene draw_chip_scene(uint64_t seed) {
     memory->place(*m.texture, m.base);
   };
   // A few maps of random kinds and sizes; the first true colour, the second an index map (the
-  // chip's CLUT is its palette).
+  // chip's CLUT is its palette), the third luminance: the second and the third 64..256 texels
+  // a side, the one-plane maps of the workloads (a span of pixels crosses pages as on a real
+  // texture).
   const auto maps = static_cast<size_t>(uniform(rng, 4, 6));
   for (size_t i = 0; i < maps; ++i) {
     ChipMapPlacement m;
     m.setup = draw_texram_setup(rng, defaults);
     if (i == 0) m.setup.config.kind = texram::TexelKind::kTrueColour;
     if (i == 1) m.setup.config.kind = texram::TexelKind::kIndex;
+    if (i == 2) m.setup.config.kind = texram::TexelKind::kLuminance;
+    if (i == 1 || i == 2) {
+      m.setup.log2_w = static_cast<int>(uniform(rng, 6, 8));
+      m.setup.log2_h = static_cast<int>(uniform(rng, 6, 8));
+    }
     place(m);
     s.maps.push_back(m);
   }
@@ -207,10 +214,12 @@ ChipScene draw_chip_scene(uint64_t seed) {
     f.setup.content = static_cast<uint32_t>(rng());
     place(f);
   }
-  // Detail mipmaps (000 §9): 16..256 texels a side, random kinds.
+  // Detail mipmaps (000 §9): 16..256 texels a side, the first grey (luminance: one map for
+  // modulating any texture), the second of a random kind.
   for (int i = 0; i < 2; ++i) {
     ChipMapPlacement m;
     m.setup = draw_texram_setup(rng, defaults);
+    if (i == 0) m.setup.config.kind = texram::TexelKind::kLuminance;
     m.setup.log2_w = static_cast<int>(uniform(rng, 4, fmts::kMaxDetailLog2));
     m.setup.log2_h = static_cast<int>(uniform(rng, 4, fmts::kMaxDetailLog2));
     place(m);
@@ -523,8 +532,9 @@ std::vector<Txn> TexramChipBlock::workload_items(size_t count) const {
     d.takes_coords = d.footprint = false;
     return d;
   };
-  const auto with_detail = [&](size_t k, DrfOp op) {
-    ChipDetailDrfs c = chip_detail_drfs(rng, s, k % s.offsets.size(), k % s.details.size());
+  // A map with the grey detail map, modulated (the texture read too: 000 §9's four accesses).
+  const auto with_detail = [&](size_t offsets, DrfOp op) {
+    ChipDetailDrfs c = chip_detail_drfs(rng, s, offsets, 0);
     c.t = plain(c.t);
     c.t.op = op;
     c.t.detail_combine = texram::DetailCombine::kModulate;
@@ -534,26 +544,27 @@ std::vector<Txn> TexramChipBlock::workload_items(size_t count) const {
     c.d.sampler.combine = texram::Combine::kOne;
     return c;
   };
+  // One-plane maps, the larger first: the index map (1) and the luminance map (2), each with
+  // its offset maps.
+  const auto texels = [&](size_t m) { return s.maps[m].setup.log2_w + s.maps[m].setup.log2_h; };
+  const size_t first = texels(1) >= texels(2) ? 1 : 2, second = 3 - first;
   ChipProgram program;
   int32_t lambda = 0, step = kOne;  // texture: a texel a pixel at level 0
   if (workload_ == "texture") {
-    size_t m = 0;
-    while (m + 1 < s.maps.size() && four_planes(s.maps[m].setup.config.kind)) ++m;
-    program.file[0] = plain(draw_drf(rng, s.maps[m]));
+    program.file[0] = plain(draw_drf(rng, s.maps[first]));
     program.file[0].op = DrfOp::kTexture;
   } else {
-    // Magnified four times: lambda -2, the detail map's levels -2 and -3; modulate reads the
-    // texture too (000 §9): four accesses a map.
+    // Magnified four times: lambda -2 (the detail map's level 2, the patent's level -2).
     lambda = -2 * kOne;
     step = kOne / 4;
-    const ChipDetailDrfs a = with_detail(0, DrfOp::kTexture);
+    const ChipDetailDrfs a = with_detail(first, DrfOp::kTexture);
     program.file[0] = a.t;
     program.file[0].link = 2;
     program.file[1] = a.o;
     program.file[1].link = 3;
     program.file[2] = a.d;
     if (workload_ == "extreme") {
-      const ChipDetailDrfs b = with_detail(1, DrfOp::kReflectance);
+      const ChipDetailDrfs b = with_detail(second, DrfOp::kReflectance);
       program.file[2].link = 4;
       program.file[3] = b.t;
       program.file[3].link = 5;
@@ -561,26 +572,33 @@ std::vector<Txn> TexramChipBlock::workload_items(size_t count) const {
       program.file[4].link = 6;
       program.file[5] = b.d;
       program.file[5].link = 7;
-      program.file[6] = plain(cube_drf(rng, s));
+      // A sphere environment map on a one-plane map, at the pixel's (uN, vN).
+      program.file[6] = plain(draw_drf(rng, s.maps[first]));
+      program.file[6].sampler.addressing = texram::Addressing::kSphere;
       program.file[6].op = DrfOp::kEnvironment;
       program.file[6].takes_coords = true;
     }
   }
   std::vector<Txn> items = chip_program_items(program.file);
-  // Scan lines of 64 pixels, 16 lines, then again: consecutive pixels step along u.
+  // Spans of 8 pixels (the patent's 8-pixel scan lines), each starting anywhere on the map, the
+  // pixels stepping along u.
+  const Drf& t = program.file[0];
+  int32_t u0 = 0, v0 = 0;
   for (size_t i = 0; items.size() < count; ++i) {
-    const auto x = static_cast<int32_t>(i % 64), y = static_cast<int32_t>(i / 64 % 16);
+    if (i % 8 == 0) {
+      u0 = static_cast<int32_t>(uniform(rng, 0, (int64_t{kOne} << t.log2_w) - 1));
+      v0 = static_cast<int32_t>(uniform(rng, 0, (int64_t{kOne} << t.log2_h) - 1));
+    }
     PixelParameter p;
     p.lead = 1;
-    p.request = {x * step + step / 2, y * step + step / 2, lambda, 0xFFC0'8040u};
+    p.request = {u0 + static_cast<int32_t>(i % 8) * step, v0, lambda, 0xFFC0'8040u};
     items.push_back(chip_param_item(p));
-    if (workload_ == "extreme") {  // the environment's coordinates: a cube face's texels
-      const Drf& e = program.file[6];
+    if (workload_ == "extreme") {  // the environment's (uN, vN): a small arc along the span
       PixelParameter q;
       q.lead = 1;
-      q.face = static_cast<int>(i / 64 % kCubeFaces);
-      q.request = {(x * kOne / 4) & ((kOne << e.log2_w) - 1), (y * kOne) & ((kOne << e.log2_h) - 1),
-                   0, 0};
+      const int64_t n = i % 8 + static_cast<int64_t>(u0 & 0xFF) * 8;
+      q.request = {static_cast<int32_t>(n * kUnitOne / 2048 - kUnitOne / 2),
+                   static_cast<int32_t>((v0 & 0xFF) * kUnitOne / 512 - kUnitOne / 4), 0, 0};
       items.push_back(chip_param_item(q));
     }
   }
