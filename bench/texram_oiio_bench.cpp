@@ -1,7 +1,9 @@
-// The golden trilinear unit and footprint assembly against the library a user would pick
-// instead: OpenImageIO's TextureSystem, on the same texels and the same requests, one thread.
-// Prints each rate, its ratio against OIIO measured in the same run, and how far apart the two
-// answers are (mean and max absolute difference per channel, 8-bit levels).
+// The golden trilinear unit and footprint assembly, scalar and fast, against the library a user
+// would pick instead: OpenImageIO's TextureSystem, on the same texels and the same requests, one
+// thread. Prints each rate, its ratio against OIIO measured in the same run, and how far apart
+// the golden and OIIO answers are (mean and max absolute difference per channel, 8-bit levels).
+// The fast path's answers are checked equal to the scalar golden's on every request before
+// anything is timed (the fixture throws otherwise).
 //   build/bench/tmu_texram_oiio_bench [--benchmark_filter=...]
 //
 // The texture: patterns::default_image(256, 256), true colour, wrap on both axes. OIIO reads our
@@ -13,6 +15,9 @@
 //   generation (levels, weights, border operators, bank addresses), one read per bank and byte
 //   plane, the fixed-point blend, eq. 5's combine (multiply by one); the footprint setup
 //   (block-floating derivatives, log2 tables) and the average of its probes.
+// - fast golden: FastTrilinear / FastFootprint::sample_batch over the same requests, the same
+//   arithmetic on the texture prepared once (outside the timing: texram/fast_trilinear.hpp),
+//   writing every result to an array; no memory plan.
 // - OIIO: TextureSystem::texture() through a texture handle and this thread's Perthread record
 //   (no file-name lookup), its tile-cache lookups (every tile resident: the cache is warmed
 //   outside the timed loop), its float pipeline on texels stored as float, its statistics.
@@ -42,6 +47,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -50,7 +56,9 @@
 
 #include "bench/ratio_reporter.hpp"
 #include "common/test_patterns.hpp"
+#include "footprint/fast_footprint.hpp"
 #include "footprint/footprint.hpp"
+#include "texram/fast_trilinear.hpp"
 #include "texram/oiio_texture.hpp"
 #include "texram/trilinear.hpp"
 
@@ -108,6 +116,8 @@ class Fixture {
     sampler_.filter = texram::Filter::kTrilinear;
     sampler_.border_u = sampler_.border_v = texram::Border::kWrap;
     footprint_.log2_max_probes = kLog2MaxProbes;
+    fast_trilinear_.emplace(texture_, sampler_);
+    fast_footprint_.emplace(texture_, sampler_, footprint_);
     std::filesystem::create_directories(dir_);
     path_ = (dir_ / "texture.exr").string();
     texram::write_oiio_mip_texture(path_, texture_, sampler_);
@@ -126,9 +136,12 @@ class Fixture {
     make_footprint_requests();
 
     // The answers, outside any timed loop; OIIO's pass also loads every tile (warm cache).
-    std::vector<uint32_t> golden;
+    // The fast path must equal the golden on every request it is timed on.
+    std::vector<uint32_t> golden, fast(kRequests);
     for (const texram::Request& r : trilinear_)
       golden.push_back(texram::sample(texture_, sampler_, r));
+    fast_trilinear_->sample_batch(trilinear_, fast);
+    if (fast != golden) throw std::logic_error("fast trilinear differs from the golden");
     trilinear_diff_ = difference(golden, oiio_run(Mode::kTrilinear, trilinear_oiio_));
     golden.clear();
     uint64_t probes = 0;
@@ -136,6 +149,8 @@ class Fixture {
       golden.push_back(footprint::sample(texture_, sampler_, footprint_, r));
       probes += uint64_t{1} << footprint::plan(r, footprint_).log2_n;
     }
+    fast_footprint_->sample_batch(footprint_requests_, fast);
+    if (fast != golden) throw std::logic_error("fast footprint differs from the golden");
     golden_probes_ = static_cast<double>(probes) / static_cast<double>(kRequests);
     aniso_diff_ = difference(golden, oiio_run(Mode::kAniso, footprint_oiio_));
     oiio_probes_ = oiio_average_probes(*ts_);
@@ -167,6 +182,8 @@ class Fixture {
   const texram::TexramTexture& texture() const { return texture_; }
   const texram::SamplerConfig& sampler() const { return sampler_; }
   const footprint::Config& footprint_config() const { return footprint_; }
+  const texram::FastTrilinear& fast_trilinear() const { return *fast_trilinear_; }
+  const footprint::FastFootprint& fast_footprint() const { return *fast_footprint_; }
   const std::vector<texram::Request>& trilinear_requests() const { return trilinear_; }
   const std::vector<OiioRequest>& trilinear_oiio() const { return trilinear_oiio_; }
   const std::vector<footprint::Request>& footprint_requests() const { return footprint_requests_; }
@@ -226,6 +243,8 @@ class Fixture {
   texram::TexramTexture texture_;
   texram::SamplerConfig sampler_;
   footprint::Config footprint_;
+  std::optional<texram::FastTrilinear> fast_trilinear_;  // prepared once, outside the timing
+  std::optional<footprint::FastFootprint> fast_footprint_;
   OIIO::TextureSystem* ts_ = nullptr;
   OIIO::TextureSystem::TextureHandle* handle_ = nullptr;
   OIIO::TextureSystem::Perthread* perthread_ = nullptr;
@@ -252,6 +271,17 @@ void BM_TrilinearGolden(benchmark::State& state) {
     for (const texram::Request& r : f.trilinear_requests())
       acc ^= texram::sample(f.texture(), f.sampler(), r);
     benchmark::DoNotOptimize(acc);
+  }
+  set_rate(state, f.trilinear_requests().size());
+}
+
+void BM_TrilinearFast(benchmark::State& state) {
+  const Fixture& f = *fixture;
+  std::vector<uint32_t> out(f.trilinear_requests().size());
+  for (auto _ : state) {
+    f.fast_trilinear().sample_batch(f.trilinear_requests(), out);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
   }
   set_rate(state, f.trilinear_requests().size());
 }
@@ -286,6 +316,18 @@ void BM_FootprintGolden(benchmark::State& state) {
   state.counters["probes"] = f.golden_probes();
 }
 
+void BM_FootprintFast(benchmark::State& state) {
+  const Fixture& f = *fixture;
+  std::vector<uint32_t> out(f.footprint_requests().size());
+  for (auto _ : state) {
+    f.fast_footprint().sample_batch(f.footprint_requests(), out);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  set_rate(state, f.footprint_requests().size());
+  state.counters["probes"] = f.golden_probes();
+}
+
 void BM_AnisoOiio(benchmark::State& state) {
   Fixture& f = *fixture;
   bool ok = true;
@@ -306,8 +348,10 @@ void BM_AnisoOiio(benchmark::State& state) {
 }
 
 BENCHMARK(BM_TrilinearGolden)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TrilinearFast)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TrilinearOiio)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FootprintGolden)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FootprintFast)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AnisoOiio)->Unit(benchmark::kMillisecond);
 
 }  // namespace
@@ -317,8 +361,10 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   tmu::bench::Fixture f;
   tmu::bench::fixture = &f;
-  tmu::bench::RatioReporter reporter(
-      {{"BM_TrilinearGolden", "BM_TrilinearOiio"}, {"BM_FootprintGolden", "BM_AnisoOiio"}});
+  tmu::bench::RatioReporter reporter({{"BM_TrilinearGolden", "BM_TrilinearOiio"},
+                                      {"BM_TrilinearFast", "BM_TrilinearOiio"},
+                                      {"BM_FootprintGolden", "BM_AnisoOiio"},
+                                      {"BM_FootprintFast", "BM_AnisoOiio"}});
   benchmark::RunSpecifiedBenchmarks(&reporter);
   fmt::print(
       "\n{} requests, {}x{} true colour, wrap; |golden - OIIO| per channel (8-bit levels):\n"

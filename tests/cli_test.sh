@@ -158,7 +158,7 @@ expect "--frames is for fly-overs" 2 "fly-over" -- \
 # The TEXRAM chip (000 §14): a scene's DRF programs and memory map; too few chips is an error
 # naming the material that did not fit.
 expect "texsim drf prints the chain of a linked material" 0 \
-  "varnish +chip 1, DRF 1 -> 2 -> 3 -> 4 -> 7" -- "$texsim" drf "$root/scenes/reflect.json"
+  "varnish +chip 1, DRF 1 \| 2 -> 3 -> 4 -> 7" -- "$texsim" drf "$root/scenes/reflect.json"
 expect "texsim drf --writes lists the write port's words" 0 "write port \(drf, field, value\)" -- \
   "$texsim" drf "$root/scenes/default.json" --writes
 expect "texsim drf: a second palette needs a second chip" 2 \

@@ -13,11 +13,21 @@ for scene in "${scenes[@]}"; do
   # A fly-over (render/flyover.hpp) has no ideal render: its frames at golden, hls and rtl, and a
   # frame rendered alone equals the same frame of the range (the clip-map is the eye's alone).
   grep -q '"flyover"' "$scene" && runs=("${runs[@]:1}")
-  for run in "${runs[@]}"; do
+  # Through the TEXRAM chips (--chips, render/chip_stage.hpp) too, at rtl, when the golden render
+  # through them (its report lists each material's chip) put a material on one.
+  chips=("golden --chips 4" "rtl --check golden --chips 4")
+  grep -q '"flyover"' "$scene" && chips=()  # the clip-map unit's (003), not the TEXRAM's
+  chips_report=""
+  for run in "${runs[@]}" ${chips[@]+"${chips[@]}"}; do
+    if [[ $run == "${chips[1]:-}" ]] && ! grep -qE "^    .*: chip [0-9]+, DRF" <<<"$chips_report"; then
+      echo "ok   $name: no material on the chips ($(grep -m1 "separate units" <<<"$chips_report"))"
+      continue
+    fi
     # shellcheck disable=SC2086
     if out=$("$texsim" render "$scene" --engine $run --out "$work/$name" --no-progress 2>&1); then
       verdict=$(grep -oE "MATCH[^,]*|MISMATCH[^,]*" <<<"$out" | head -1)
       echo "ok   $name: $run ${verdict:+($verdict)}"
+      [[ $run == "${chips[0]:-}" ]] && chips_report=$out
     else
       echo "FAIL $name: $run"; echo "$out" | tail -15
       failures=$((failures + 1))

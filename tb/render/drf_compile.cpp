@@ -185,7 +185,12 @@ ScenePrograms compile_drfs(const host::Scene& scene, const std::vector<MaterialT
       d.log2_h = s.texture->geometry.log2_height();
       d.op = s.op;
       d.takes_coords = s.takes_coords;
-      d.link = k + 1 < steps.size() ? prog.drfs[k + 1] : 0;
+      // An emit DRF ends its pass: its texel leaves the chip for the deflection unit, whose
+      // coordinates the next pass brings (the units run one after the other over all pixels,
+      // so a pixel cannot wait inside the chip for them).
+      const bool ends_pass = s.op == DrfOp::kEmit;
+      d.link = k + 1 < steps.size() && !ends_pass ? prog.drfs[k + 1] : 0;
+      if (k == 0 || steps[k - 1].op == DrfOp::kEmit) prog.passes.push_back(prog.drfs[k]);
       if (s.footprint) {
         d.footprint = true;
         d.log2_max_probes = s.footprint->log2_max_probes;
@@ -210,7 +215,7 @@ ScenePrograms compile_drfs(const host::Scene& scene, const std::vector<MaterialT
       }
       if (k == 0 || s.takes_coords) prog.parameters.push_back(s.parameter);
     }
-    texram::chip::check_program(chip.drfs, {prog.drfs.front()});
+    texram::chip::check_program(chip.drfs, prog.passes);
     out.materials.push_back(prog);
   }
   return out;

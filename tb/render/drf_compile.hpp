@@ -46,8 +46,11 @@ struct ChipProgram {
 
 struct MaterialProgram {
   int material = 0;
-  int chip = -1;                        // -1: not on a chip (why)
-  std::vector<int> drfs;                // the chain, leading DRF first
+  int chip = -1;          // -1: not on a chip (why)
+  std::vector<int> drfs;  // the chain, leading DRF first
+  // The leading DRF of each pass over the material's pixels: the chain, or with a bump map
+  // the emit DRF alone and then the rest (its deflected coordinates come from outside).
+  std::vector<int> passes;
   std::vector<std::string> parameters;  // what each parameter transaction of a pixel carries
   std::string why;                      // not on a chip: the reason
 };

@@ -19,6 +19,7 @@
 #include "deflect/deflect_ideal.hpp"
 #include "deflect/view_maps.hpp"
 #include "formats/formats.hpp"
+#include "render/chip_stage.hpp"
 #include "texram/trilinear_ideal.hpp"
 
 namespace tmu::render {
@@ -27,6 +28,7 @@ namespace {
 using deflect::SphereAngle;
 using glm::dvec3;
 using glm::dvec4;
+using texram::chip::PixelParameter;
 
 constexpr const char* kFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
 constexpr int kCoordValueBits = 10;  // the coordinate tables' W (the RTL's)
@@ -88,6 +90,50 @@ deflect::ideal::Angles ideal_bump_angles(const dvec4& texel) {
           static_cast<double>((b & 0x80) ? -mag : mag) * kChainGrid.step()};
 }
 
+// The chip's pass over the pixels once their map coordinates are known: each pixel brings the
+// parameters of the DRFs that take them, in the chain's order (render/drf_compile.cpp):
+// [diffuse at (uN, vN)], the texture at (u, v, lambda) with the vertex shade, [the environment
+// at (uN, vN), or a cube face and (u, v) on it from the cube address unit]. The reflectance map
+// reads the texture's (u, v, lambda); eq. 5-7 happen in the chip.
+std::vector<uint32_t> chip_pass(const ChainInput& in,
+                                const std::vector<deflect::MapCoords>& map_coords,
+                                std::vector<UnitRun>& units,
+                                std::vector<std::vector<size_t>>& outputs_of) {
+  const host::Material& mat = in.material;
+  const EffectMaps& maps = in.texture.effects;
+  const size_t n = in.frags.size();
+  std::vector<std::vector<PixelParameter>> params(n);
+  for (size_t k = 0; k < n; ++k) {
+    const host::FragmentRecord& r = in.records[in.frags[k]];
+    const deflect::MapCoords& c = map_coords[k];
+    if (maps.diffuse) params[k].push_back({1, {c.un, c.vn, 0, r.shade}});
+    params[k].push_back({1, {r.u, r.v, r.lambda, r.shade}});
+    if (mat.specular || mat.environment) {
+      if (maps.specular || maps.sphere) params[k].push_back({1, {c.un, c.vn, 0, 0}});
+    }
+  }
+  if ((mat.specular || mat.environment) && maps.cube[0]) {
+    UnitRun cube;
+    cube.kind = "cube_address";
+    cube.material = mat.name;
+    attach(cube, std::make_shared<tb::CubeAddressBlock>());
+    for (const deflect::MapCoords& c : map_coords)
+      cube.items.push_back(tb::cube_item(c.ur, c.vr, c.wr, maps.cube[0].log2_side));
+    const std::vector<tb::Txn> address =
+        run_and_keep(std::move(cube), in.level, in.frags, units, outputs_of);
+    for (size_t k = 0; k < n; ++k) {
+      PixelParameter p{1,
+                       {static_cast<int32_t>(address[k].f[tb::desc::cube_address::out_u]),
+                        static_cast<int32_t>(address[k].f[tb::desc::cube_address::out_v]), 0, 0}};
+      p.face = static_cast<int>(address[k].f[tb::desc::cube_address::out_face]);
+      params[k].push_back(p);
+    }
+  }
+  const size_t pass = maps.bump ? 1 : 0;
+  return in.chip->run_pass(in.material_index, pass, std::move(params), in.frags, in.level, units,
+                           outputs_of);
+}
+
 }  // namespace
 
 std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun>& units,
@@ -114,11 +160,20 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
                       static_cast<uint32_t>(t.f[tb::desc::normal_encoder::out_theta])});
   }
 
-  // The bump: the texel at (u, v), then the deflection.
+  // The bump: the texel at (u, v) (on a chip its first pass, the emit DRF), then the
+  // deflection.
   if (maps.bump) {
-    std::vector<std::array<int32_t, 3>> uvl;
-    for (size_t k = 0; k < n; ++k) uvl.push_back({record(k).u, record(k).v, 0});
-    const std::vector<uint32_t> texels = runner.sample("bump", maps.bump, uvl, frags);
+    std::vector<uint32_t> texels;
+    if (in.chip) {
+      std::vector<std::vector<PixelParameter>> params;
+      for (size_t k = 0; k < n; ++k) params.push_back({{1, {record(k).u, record(k).v, 0, 0}}});
+      in.chip->run_pass(in.material_index, 0, std::move(params), frags, in.level, units, outputs_of,
+                        &texels);
+    } else {
+      std::vector<std::array<int32_t, 3>> uvl;
+      for (size_t k = 0; k < n; ++k) uvl.push_back({record(k).u, record(k).v, 0});
+      texels = runner.sample("bump", maps.bump, uvl, frags);
+    }
     UnitRun deflect;
     deflect.kind = "deflect";
     deflect.material = mat.name;
@@ -144,6 +199,8 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
   std::vector<deflect::MapCoords> map_coords;
   for (const tb::Txn& t : runner.run(std::move(coords), frags))
     map_coords.push_back(tb::coord_gen_output(t));
+
+  if (in.chip) return chip_pass(in, map_coords, units, outputs_of);
 
   // I_d: the diffuse shading map, or the vertex shade.
   std::vector<uint32_t> shade;
@@ -218,9 +275,10 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
   return out;
 }
 
-std::vector<HostWork> effect_chain_host_work(const host::Material& mat, const EffectMaps& maps) {
+std::vector<HostWork> effect_chain_host_work(const host::Material& mat, const EffectMaps& maps,
+                                             bool on_chip) {
   std::vector<HostWork> w;
-  if (maps.cube[0]) {
+  if (maps.cube[0] && !on_chip) {  // a chip's DRF 7 holds the six faces
     w.push_back({"cube-face dispatch: each sample to its face's trilinear unit",
                  "tmu_cube_address selects the face; the six faces are six maps in six units "
                  "until one TEXRAM memory holds them"});

@@ -24,6 +24,8 @@
 
 namespace tmu::render {
 
+class ChipStage;
+
 struct ChainInput {
   const host::Scene& scene;
   const host::Material& material;
@@ -31,6 +33,10 @@ struct ChainInput {
   Level level;
   const std::vector<host::FragmentRecord>& records;
   const std::vector<size_t>& frags;  // the material's fragments, indices into records
+  // The chips, when they sample this material's maps (ChipStage::samples): the chain's map
+  // units and its specular_combine become passes of the chip (render/chip_stage.hpp).
+  ChipStage* chip = nullptr;
+  size_t material_index = 0;  // in the scene (for the chip)
 };
 
 // Runs the chain at in.level (not ideal); appends every unit it ran to `units` and the
@@ -40,8 +46,8 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
 
 // What run_effect_chain computes on the host for `material` (its stages that are not yet a
 // unit's), with the reason.
-std::vector<HostWork> effect_chain_host_work(const host::Material& material,
-                                             const EffectMaps& maps);
+std::vector<HostWork> effect_chain_host_work(const host::Material& material, const EffectMaps& maps,
+                                             bool on_chip);
 
 // The ideal: the exact normal rotated by the bump texel's exact angles, exact map coordinates
 // and reflection vector, the maps sampled there by the ideal trilinear unit, eq. 5-7 in

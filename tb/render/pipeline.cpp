@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
+#include <mutex>
 #include <stdexcept>
 
 #include "blocks/ccc_cache_bilinear/ccc_cache_bilinear_block.hpp"
@@ -15,7 +17,9 @@
 #include "common/error.hpp"
 #include "common/image.hpp"
 #include "footprint/footprint_ideal.hpp"
+#include "render/chip_stage.hpp"
 #include "render/effect_chain.hpp"
+#include "render/jobs.hpp"
 #include "render/procedural_chain.hpp"
 #include "render/tau_stage.hpp"
 #include "render/texture_source.hpp"
@@ -90,7 +94,8 @@ uint32_t rgba_of(const glm::dvec4& c) {
   return texram::rgba(ch(c.r), ch(c.g), ch(c.b), ch(c.a));
 }
 
-Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level_(level) {
+Pipeline::Pipeline(const host::Scene& scene, Level level, int chips)
+    : scene_(scene), level_(level) {
   for (size_t m = 0; m < scene.materials.size(); ++m) {
     const host::Material& mat = scene.materials[m];
     const std::string field = "materials." + mat.name + ".texture";
@@ -130,9 +135,12 @@ Pipeline::Pipeline(const host::Scene& scene, Level level) : scene_(scene), level
     if (mat.uses_normal()) mt.effects = build_effect_maps(scene, mat);
     textures_.push_back(std::move(mt));
   }
+  if (chips > 0 && level != Level::kIdeal) {
+    chips_ = std::make_shared<ChipStage>(scene, textures_, chips);
+  }
 }
 
-void Pipeline::generate_mipmaps(size_t m) {
+void Pipeline::generate_mipmaps(size_t m, MaterialWork& w) {
   // The real-time mipmap generator (000 §12) writes every level into the banks from the
   // level-0 texels, one stream per byte plane; the trilinear unit then reads what it wrote.
   // (Ideal computes the exact box pyramid of level 0 itself: texram/trilinear_ideal.hpp.)
@@ -155,8 +163,8 @@ void Pipeline::generate_mipmaps(size_t m) {
       const texram::CellWrite cw = tb::mipgen_txn_write(w);
       generated.banks[cw.cell.bank][cw.cell.address] = cw.value;
     }
-    units_.push_back(std::move(run));
-    fragment_of_output_.emplace_back();
+    w.units.push_back(std::move(run));
+    w.outputs_of.emplace_back();
   }
   mt.texram = std::make_shared<const texram::TexramTexture>(std::move(generated));
   mt.mipgen_pending = false;
@@ -188,11 +196,21 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
   std::vector<std::vector<size_t>> of_material(scene_.materials.size());
   for (size_t i = 0; i < records.size(); ++i) of_material[records[i].material].push_back(i);
 
-  uint64_t done = 0;
-  for (size_t m = 0; m < scene_.materials.size(); ++m) {
+  // The materials' chains are independent: each runs on its own thread (its own engines and
+  // models) with its own list of units, joined in material order, so the result is the serial
+  // run's whatever the number of jobs. The fragments' colours are disjoint slots of `out`.
+  std::atomic<uint64_t> done{0};
+  std::mutex progress_mutex;
+  const bool serial = jobs_ <= 1;
+  const auto advance = [&](uint64_t n) {
+    const uint64_t now = done += n;
+    if (!progress) return;
+    const std::lock_guard<std::mutex> lock(progress_mutex);
+    progress(now, records.size());
+  };
+  const auto shade_one = [&](size_t m, MaterialWork& w) {
     const std::vector<size_t>& frags = of_material[m];
-    if (frags.empty()) continue;  // no fragment, no unit
-    if (textures_[m].mipgen_pending) generate_mipmaps(m);
+    if (textures_[m].mipgen_pending) generate_mipmaps(m, w);
     const host::Material& mat = scene_.materials[m];
     const MaterialTexture& tex = textures_[m];
     const bool lowcost = mat.unit == host::Material::Unit::kLowcost;
@@ -223,17 +241,17 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
         }
       }
       if (level_ != Level::kIdeal) {
-        note_host_work(compose ? HostWork{"order texture: the interpolated vertex texture colour "
-                                          "composed with the pixel's shade (texram::combine)",
-                                          "004 claim 17 composes after the rasterizer's "
-                                          "interpolation, outside the texture unit"}
-                               : HostWork{"order composed: the vertex colours interpolated",
-                                          "004 claim 18 leaves nothing per pixel but the "
-                                          "rasterizer's interpolation"});
+        w.host_work.push_back(
+            compose ? HostWork{"order texture: the interpolated vertex texture colour "
+                               "composed with the pixel's shade (texram::combine)",
+                               "004 claim 17 composes after the rasterizer's "
+                               "interpolation, outside the texture unit"}
+                    : HostWork{"order composed: the vertex colours interpolated",
+                               "004 claim 18 leaves nothing per pixel but the "
+                               "rasterizer's interpolation"});
       }
-      done += frags.size();
-      if (progress) progress(done, records.size());
-      continue;
+      advance(frags.size());
+      return;
     }
     if (mat.procedural) {
       const ChainInput in{scene_, mat, tex, level_, records, frags};
@@ -244,12 +262,11 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
           out[frags[k]] = rgba_of(c[k]);
         }
       } else {
-        const std::vector<uint32_t> rgba = run_procedural(in, units_, fragment_of_output_);
+        const std::vector<uint32_t> rgba = run_procedural(in, w.units, w.outputs_of);
         for (size_t k = 0; k < frags.size(); ++k) out[frags[k]] = rgba[k];
       }
-      done += frags.size();
-      if (progress) progress(done, records.size());
-      continue;
+      advance(frags.size());
+      return;
     }
     if (level_ == Level::kIdeal && mat.uses_normal()) {
       const std::vector<glm::dvec4> c =
@@ -258,9 +275,8 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
         (*ideal_rgba)[frags[k]] = c[k];
         out[frags[k]] = rgba_of(c[k]);
       }
-      done += frags.size();
-      if (progress) progress(done, records.size());
-      continue;
+      advance(frags.size());
+      return;
     }
     if (level_ == Level::kIdeal) {
       for (size_t i : frags) {
@@ -279,19 +295,33 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
         (*ideal_rgba)[i] = c;
         out[i] = rgba_of(c);
       }
-      done += frags.size();
-      if (progress) progress(done, records.size());
-      continue;
+      advance(frags.size());
+      return;
     }
 
+    ChipStage* chip = chips_ && chips_->samples(m) ? chips_.get() : nullptr;
     if (mat.uses_normal()) {
-      for (const HostWork& w : effect_chain_host_work(mat, tex.effects)) note_host_work(w);
-      const std::vector<uint32_t> rgba =
-          run_effect_chain({scene_, mat, tex, level_, records, frags}, units_, fragment_of_output_);
+      for (const HostWork& h : effect_chain_host_work(mat, tex.effects, chip != nullptr))
+        w.host_work.push_back(h);
+      const std::vector<uint32_t> rgba = run_effect_chain(
+          {scene_, mat, tex, level_, records, frags, chip, m}, w.units, w.outputs_of);
       for (size_t k = 0; k < frags.size(); ++k) out[frags[k]] = rgba[k];
-      done += frags.size();
-      if (progress) progress(done, records.size());
-      continue;
+      advance(frags.size());
+      return;
+    }
+    if (chip) {  // one parameter a pixel: the texture's request (from the tau unit in order pc)
+      const std::vector<host::FragmentRecord> tau =
+          pc ? run_tau(mat, tex.size, records, frags, level_, w.units, w.outputs_of)
+             : std::vector<host::FragmentRecord>{};
+      const std::vector<host::FragmentRecord>& at = pc ? tau : records;
+      std::vector<std::vector<texram::chip::PixelParameter>> params;
+      for (size_t i : frags)
+        params.push_back({{1, {at[i].u, at[i].v, at[i].lambda, records[i].shade}}});
+      const std::vector<uint32_t> rgba =
+          chip->run_pass(m, 0, std::move(params), frags, level_, w.units, w.outputs_of);
+      for (size_t k = 0; k < frags.size(); ++k) out[frags[k]] = rgba[k];
+      advance(frags.size());
+      return;
     }
     UnitRun run;
     if (lowcost) {
@@ -305,15 +335,16 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
     } else {
       std::vector<uint32_t> shades;
       for (size_t i : frags) shades.push_back(records[i].shade);
-      run = pc ? texture_unit(
-                     mat, tex,
-                     run_tau(mat, tex.size, records, frags, level_, units_, fragment_of_output_),
-                     frags, shades)
+      run = pc ? texture_unit(mat, tex,
+                              run_tau(mat, tex.size, records, frags, level_, w.units, w.outputs_of),
+                              frags, shades)
                : texture_unit(mat, tex, records, frags, shades);
     }
     tb::RunOptions options;
-    const uint64_t base = done;
-    if (progress) options.progress = [&, base](uint64_t n) { progress(base + n, records.size()); };
+    if (progress && serial) {  // within the unit too, when one unit runs at a time
+      const uint64_t base = done;
+      options.progress = [&, base](uint64_t n) { progress(base + n, records.size()); };
+    }
     run_unit(run, level_, options);
     for (size_t k = 0; k < frags.size(); ++k) {
       uint32_t c = static_cast<uint32_t>(run.result.outputs[k].f[0]);
@@ -325,14 +356,27 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
       out[frags[k]] = c;
     }
     if (lowcost && mat.sampler.combine != texram::Combine::kOne) {
-      note_host_work({"low-cost unit's eq. 5 combine (texram::combine)",
-                      "the low-cost unit of 000 §4 has no eq. 5 stage (eq. 5 is the TEXRAM's, §7); "
-                      "the project applies the scene's combine to its RGB888"});
+      w.host_work.push_back(
+          {"low-cost unit's eq. 5 combine (texram::combine)",
+           "the low-cost unit of 000 §4 has no eq. 5 stage (eq. 5 is the TEXRAM's, §7); "
+           "the project applies the scene's combine to its RGB888"});
     }
-    done += frags.size();
-    if (progress) progress(done, records.size());
-    units_.push_back(std::move(run));
-    fragment_of_output_.push_back(frags);
+    w.units.push_back(std::move(run));
+    w.outputs_of.push_back(frags);
+    advance(frags.size());
+  };
+
+  std::vector<size_t> materials;
+  for (size_t m = 0; m < scene_.materials.size(); ++m) {
+    if (!of_material[m].empty()) materials.push_back(m);  // no fragment, no unit
+  }
+  std::vector<MaterialWork> work(scene_.materials.size());
+  run_jobs(materials.size(), serial ? 1 : jobs_,
+           [&](size_t i) { shade_one(materials[i], work[materials[i]]); });
+  for (MaterialWork& w : work) {
+    for (UnitRun& u : w.units) units_.push_back(std::move(u));
+    for (std::vector<size_t>& f : w.outputs_of) fragment_of_output_.push_back(std::move(f));
+    for (const HostWork& h : w.host_work) note_host_work(h);
   }
   return out;
 }

@@ -64,6 +64,8 @@ uint32_t rgba_of(const glm::dvec4& colour);
 // Called with (units done, fragments textured so far, fragments in all).
 using Progress = std::function<void(uint64_t done, uint64_t total)>;
 
+class ChipStage;
+
 class Pipeline {
  public:
   // Loads every material's texture. A mipgen chain's mipgen unit runs (at `level`) when its
@@ -71,9 +73,15 @@ class Pipeline {
   // no unit and samples each texture's source through its own exact pyramid
   // (texram/trilinear_ideal.hpp). Throws InputError naming the scene and the material's
   // texture field.
-  Pipeline(const host::Scene& scene, Level level);
+  // With chips > 0 (not ideal), the materials whose maps a TEXRAM chip can sample go through
+  // `chips` chips (render/chip_stage.hpp); the others through their separate units as with 0.
+  Pipeline(const host::Scene& scene, Level level, int chips = 0);
 
   Level level() const { return level_; }
+  // How many materials shade() runs at once, each on its own thread with its own engines
+  // (default 1). An hls run stays serial: each SystemC run is a forked child.
+  void set_jobs(int jobs) { jobs_ = level_ == Level::kHls ? 1 : jobs; }
+  const ChipStage* chips() const { return chips_.get(); }  // null without chips
   const std::vector<MaterialTexture>& textures() const { return textures_; }
   std::vector<glm::ivec2> texture_sizes() const;
   // What the rasterizer scales each material's uv by: its texture size, or for an order-pc
@@ -108,13 +116,21 @@ class Pipeline {
  private:
   const host::Scene& scene_;
   Level level_;
+  // What shading one material built: its units in order, their outputs' fragments, host work.
+  struct MaterialWork {
+    std::vector<UnitRun> units;
+    std::vector<std::vector<size_t>> outputs_of;
+    std::vector<HostWork> host_work;
+  };
   // The mipgen units of material m: its texture's levels written by the generator.
-  void generate_mipmaps(size_t m);
+  void generate_mipmaps(size_t m, MaterialWork& work);
+  int jobs_ = 1;
 
   std::vector<MaterialTexture> textures_;
   std::vector<UnitRun> units_;
   std::vector<std::vector<size_t>> fragment_of_output_;
   std::vector<HostWork> host_work_;
+  std::shared_ptr<ChipStage> chips_;
   void note_host_work(const HostWork& w);
 };
 

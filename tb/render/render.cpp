@@ -15,6 +15,7 @@
 #include "geometry/mesh.hpp"
 #include "harness/waveform.hpp"
 #include "raster/rasterizer.hpp"
+#include "render/chip_stage.hpp"
 #include "render/pipeline.hpp"
 #include "render/progress.hpp"
 #include "render/unit_check.hpp"
@@ -106,8 +107,10 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
   rep.pixels = static_cast<uint64_t>(width) * static_cast<uint64_t>(band.row_end - band.row_begin);
 
   auto t = Clock::now();
-  Pipeline pipe(scene, o.level);
+  Pipeline pipe(scene, o.level, o.chips);
+  pipe.set_jobs(o.jobs);
   rep.textures_s = since(t);
+  if (const ChipStage* chips = pipe.chips()) rep.chips = chip_lines(scene, *chips);
 
   // The fragments: from the front end, or replayed from a trace.
   t = Clock::now();
@@ -185,7 +188,8 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
 
   // Bit for bit against another engine, fragment by fragment.
   if (o.check) {
-    Pipeline ref(scene, *o.check);
+    Pipeline ref(scene, *o.check, o.chips);
+    ref.set_jobs(o.jobs);
     // Its own vertex units, for the unit check (the pixels compare on this run's fragments).
     if (samples_at_vertices_anywhere(scene))
       front_end(scene, ref, band.row_begin, band.row_end, nullptr);

@@ -16,9 +16,10 @@ uint64_t sum_counter(const std::vector<UnitReport>& units, const std::string& ki
   return n;
 }
 
-// The TEXRAM's banks: read by the trilinear units and by the footprint units' own.
+// The TEXRAM's banks: read by the trilinear units, the footprint units' own and the chips.
 uint64_t memory_counter(const std::vector<UnitReport>& units, const std::string& name) {
-  return sum_counter(units, "trilinear", name) + sum_counter(units, "footprint", name);
+  return sum_counter(units, "trilinear", name) + sum_counter(units, "footprint", name) +
+         sum_counter(units, "texram_chip", name);
 }
 
 uint64_t footprint_transactions(const std::vector<UnitReport>& units) {
@@ -62,6 +63,10 @@ std::string RenderReport::text() const {
            "fault\n";
       break;
     }
+  }
+  if (!chips.empty()) {
+    s += "  TEXRAM chips (--chips): the materials' maps\n";
+    for (const std::string& c : chips) s += "    " + c + "\n";
   }
   if (!host_work.empty()) {
     s += "  host work (stages of the documents' pipelines computed on the host, not in a unit):\n";
@@ -154,6 +159,7 @@ std::string RenderReport::json() const {
                           {"counters", c}});
   }
   if (units.empty()) j["units"] = nlohmann::json::array();
+  j["chips"] = chips;
   j["host_work"] = nlohmann::json::array();
   for (const HostWork& w : host_work)
     j["host_work"].push_back({{"stage", w.stage}, {"reason", w.reason}});

@@ -50,6 +50,8 @@ struct RenderReport {
   uint64_t pixels = 0;  // of the band
   std::vector<UnitReport> units;
   std::vector<HostWork> host_work;  // the documents' stages the host computed, and why
+  // With --chips: per material "NAME: chip C, DRF 1 -> 2" or "NAME: separate units: why".
+  std::vector<std::string> chips;
   double front_end_s = 0, textures_s = 0, units_s = 0, total_s = 0;
   std::optional<CheckReport> check;
   std::optional<CompareReport> compare;

@@ -1,6 +1,7 @@
 #include "render/units.hpp"
 
 #include <map>
+#include <mutex>
 #include <stdexcept>
 
 namespace tmu::render {
@@ -31,14 +32,30 @@ std::string engine_name(Level level) {
 }
 
 namespace {
+// Units run on several threads at once (Pipeline::set_jobs).
+std::mutex census_mutex;
 std::map<std::string, UnitCensus>& census_map() {
   static std::map<std::string, UnitCensus> m;
   return m;
 }
 }  // namespace
 
-UnitCensus& census(const std::string& key) { return census_map()[key]; }
-void reset_census() { census_map().clear(); }
+UnitCensus census(const std::string& key) {
+  const std::lock_guard<std::mutex> lock(census_mutex);
+  return census_map()[key];
+}
+void count_built(const std::string& key) {
+  const std::lock_guard<std::mutex> lock(census_mutex);
+  ++census_map()[key].built;
+}
+void count_cycles(const std::string& key, uint64_t cycles) {
+  const std::lock_guard<std::mutex> lock(census_mutex);
+  census_map()[key].cycles += cycles;
+}
+void reset_census() {
+  const std::lock_guard<std::mutex> lock(census_mutex);
+  census_map().clear();
+}
 
 void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options) {
   unit.result = unit.engine(engine_name(level))->run(unit.items, options);
@@ -46,7 +63,7 @@ void run_unit(UnitRun& unit, Level level, const tb::RunOptions& options) {
     throw std::runtime_error(unit.name() + " (" + engine_name(level) +
                              ") failed: " + unit.result.error);
   }
-  for (const std::string& key : unit.census_keys()) census(key).cycles += unit.result.cycles;
+  for (const std::string& key : unit.census_keys()) count_cycles(key, unit.result.cycles);
 }
 
 uint64_t unit_cycles(const UnitRun& unit, bool* predicted) {

@@ -61,7 +61,9 @@ struct UnitCensus {
   uint64_t built = 0;
   uint64_t cycles = 0;
 };
-UnitCensus& census(const std::string& key);
+UnitCensus census(const std::string& key);
+void count_built(const std::string& key);
+void count_cycles(const std::string& key, uint64_t cycles);
 void reset_census();
 
 // A unit's engines and block from a block that owns its environment.
@@ -70,7 +72,7 @@ template <class Block>
 void attach(UnitRun& run, std::shared_ptr<Block> block) {
   run.block = block;
   run.engine = [block, keys = run.census_keys()](const std::string& level) {
-    for (const std::string& key : keys) ++census(key).built;
+    for (const std::string& key : keys) count_built(key);
     return block->engine(level);
   };
 }

@@ -35,7 +35,12 @@ void Pipeline::colour_vertices(std::vector<host::Mesh>& meshes) {
     const host::Material& mat = scene_.materials[m];
     host::Mesh& mesh = meshes[o];
     if (!samples_at_vertices(mat) || mesh.vertices.empty()) continue;
-    if (textures_[m].mipgen_pending) generate_mipmaps(m);
+    if (textures_[m].mipgen_pending) {
+      MaterialWork work;
+      generate_mipmaps(m, work);
+      for (UnitRun& u : work.units) units_.push_back(std::move(u));
+      for (auto& f : work.outputs_of) fragment_of_output_.push_back(std::move(f));
+    }
     const MaterialTexture& tex = textures_[m];
     // Order texture samples the texture alone: the composition comes per pixel.
     host::Material sampled = mat;

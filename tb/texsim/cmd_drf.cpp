@@ -113,8 +113,15 @@ void run(const Args& a) {
       fmt::print("  {:<14} not on a chip: {}\n", name, p.why);
       continue;
     }
+    std::vector<std::string> passes;  // "1" or "1 | 2 -> 3": a pass ends at an emit DRF
+    for (int lead : p.passes) {
+      passes.push_back(fmt::format(
+          "{}",
+          fmt::join(texram::chip::chain(programs.chips[static_cast<size_t>(p.chip)].drfs, lead),
+                    " -> ")));
+    }
     fmt::print("  {:<14} chip {}, DRF {}; a pixel brings {}\n", name, p.chip,
-               fmt::join(p.drfs, " -> "), fmt::join(p.parameters, ", then "));
+               fmt::join(passes, " | "), fmt::join(p.parameters, ", then "));
   }
 }
 

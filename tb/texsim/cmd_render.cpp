@@ -3,6 +3,7 @@
 
 #include <iostream>
 #include <memory>
+#include <thread>
 
 #include "common/error.hpp"
 #include "common/image.hpp"
@@ -55,6 +56,19 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
   cmd->add_option("--frames", a->frames,
                   "A fly-over scene (a \"flyover\" section, render/flyover.hpp): the frames A-B "
                   "(default every frame of its path)");
+  cmd->add_option("--chips", a->options.chips,
+                  "Sample the materials' maps on this many TEXRAM chips (000 §14): each material "
+                  "compiled to DRFs\n(texsim drf shows them), its maps and specular combine one "
+                  "texram_chip unit; the report lists\nthe materials that stay on separate units "
+                  "and why (0: every map its own unit)")
+      ->check(CLI::Range(0, 64))
+      ->capture_default_str();
+  a->options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  cmd->add_option("--jobs", a->options.jobs,
+                  "Materials shaded at once, each on its own thread with its own models (the "
+                  "image and report\nare the same for any number; hls runs one at a time)")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
   cmd->add_flag("--no-progress", a->no_progress, "No progress bar");
   cmd->callback([a, &exit_code] {
     load_oiio_plugin();  // before the report's clock starts
@@ -66,6 +80,11 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
     o.progress = !a->no_progress;
     if (!a->tile.empty()) std::tie(o.tile, o.tiles) = render::parse_tile(a->tile);
     if (render::is_flyover(a->scene)) {
+      if (o.chips > 0) {
+        throw InputError(a->scene, "flyover",
+                         "--chips: a fly-over samples its clip-map through the clip-map unit "
+                         "(003), not a TEXRAM chip");
+      }
       render::FrameRange range;
       if (!a->frames.empty()) {
         const auto dash = a->frames.find('-');

@@ -181,12 +181,10 @@ ChipScene draw_chip_scene(uint64_t seed) {
   TexramTextures textures("texram_chip");
   const BlockOptions defaults;
   ChipScene s;
-  auto memory = std::make_shared<texram::chip::ChipMemory>();
   std::vector<std::pair<uint32_t, uint32_t>> used;
   const auto place = [&](ChipMapPlacement& m) {
     m.texture = textures.texture_of(m.setup);
     m.base = place_base(rng, m.texture->geometry.bank_cells(), used);
-    memory->place(*m.texture, m.base);
   };
   // A few maps of random kinds and sizes; the first true colour, the second an index map (the
   // chip's CLUT is its palette), the third luminance: the second and the third 64..256 texels
@@ -228,6 +226,7 @@ ChipScene draw_chip_scene(uint64_t seed) {
   // Offset map pairs at the first plain maps' sizes: offsets anywhere in 0..255, multiples of 16
   // (regions side by side), or 240..255 (regions that wrap at the detail map's side); the v map
   // right after the u map, page aligned (offsets_v_base).
+  std::vector<ChipMapPlacement> offset_maps;
   for (size_t i = 0; i < std::min<size_t>(3, s.maps.size()); ++i) {
     ChipOffsetsPlacement o;
     o.map = i;
@@ -244,11 +243,32 @@ ChipScene draw_chip_scene(uint64_t seed) {
     const texram::DetailMap dm = texram::make_detail_map(*s.details[0].texture, u, v);
     const uint32_t u_cells = texram::page_up(dm.offset_u.geometry.bank_cells());
     o.base = place_base(rng, u_cells + dm.offset_v.geometry.bank_cells(), used);
-    memory->place(dm.offset_u, o.base);
-    memory->place(dm.offset_v, o.base + u_cells);
+    ChipMapPlacement pu, pv;
+    pu.texture = std::make_shared<const texram::TexramTexture>(dm.offset_u);
+    pu.base = o.base;
+    pv.texture = std::make_shared<const texram::TexramTexture>(dm.offset_v);
+    pv.base = o.base + u_cells;
+    offset_maps.push_back(pu);
+    offset_maps.push_back(pv);
     s.offsets.push_back(o);
   }
-  s.clut = s.maps[1].texture->clut;
+  std::vector<ChipMapPlacement> all = s.maps;
+  all.insert(all.end(), s.faces.begin(), s.faces.end());
+  all.insert(all.end(), s.details.begin(), s.details.end());
+  all.insert(all.end(), offset_maps.begin(), offset_maps.end());
+  ChipScene placed = chip_scene_of(all, s.maps[1].texture->clut);
+  placed.maps = s.maps;
+  placed.faces = s.faces;
+  placed.offsets = s.offsets;
+  placed.details = s.details;
+  return placed;
+}
+
+ChipScene chip_scene_of(const std::vector<ChipMapPlacement>& maps, const texram::Clut32& clut) {
+  ChipScene s;
+  auto memory = std::make_shared<texram::chip::ChipMemory>();
+  for (const ChipMapPlacement& m : maps) memory->place(*m.texture, m.base);
+  s.clut = clut;
   s.memory = memory;
   auto image = std::make_shared<texram::TexramTexture>();
   image->banks = memory->banks();
@@ -500,16 +520,24 @@ PixelParameter chip_parameter(const Txn& t) {
 
 // ---- The block -------------------------------------------------------------------------------
 
-TexramChipBlock::TexramChipBlock(const BlockOptions& options) : DescribedBlockOf(D::table()) {
-  scene_ = std::make_shared<const ChipScene>(draw_chip_scene(options.seed));
+TexramChipBlock::TexramChipBlock(const BlockOptions& options)
+    : TexramChipBlock(options, std::make_shared<const ChipScene>(draw_chip_scene(options.seed)),
+                      {}) {
   std::mt19937_64 rng(options.seed ^ 0xC41F'0000'0000'0002ull);
   first_ = draw_chip_program(rng, *scene_);
+  drawn_ = true;
   workload_ = options.chip_workload;
   if (!workload_.empty() && workload_ != "texture" && workload_ != "detail" &&
       workload_ != "extreme") {
     throw std::invalid_argument("texram_chip: no workload '" + workload_ +
                                 "' (texture, detail, extreme)");
   }
+}
+
+TexramChipBlock::TexramChipBlock(const BlockOptions& /*nothing is drawn*/,
+                                 std::shared_ptr<const ChipScene> scene,
+                                 const texram::chip::DrfFile& program)
+    : DescribedBlockOf(D::table()), scene_(std::move(scene)), first_{program, {}}, drawn_(false) {
   add_level("hls", hls_level<desc::texram_chip_sc, hls::TexramChipSc>());
   TMU_ADD_RTL_LEVELS(texram_chip, variant());
 }
@@ -610,13 +638,15 @@ std::vector<Txn> TexramChipBlock::setup_items() const {
   for (size_t i = 0; i < scene_->clut.size(); ++i) {
     items.push_back(chip_clut_item(static_cast<uint8_t>(i), scene_->clut[i]));
   }
-  // Pixels before any DRF is written: the DRFs as reset (golden's DrfFile{}: a 1 x 1
-  // luminance map at base 0, trilinear, texture, link 0).
-  for (int lead : {1, 7}) {
-    PixelParameter p;
-    p.lead = lead;
-    p.request = {kOne / 2, kOne / 2, 0, 0x8040'20FFu};
-    items.push_back(chip_param_item(p));
+  if (drawn_) {
+    // Pixels before any DRF is written: the DRFs as reset (golden's DrfFile{}: a 1 x 1
+    // luminance map at base 0, trilinear, texture, link 0).
+    for (int lead : {1, 7}) {
+      PixelParameter p;
+      p.lead = lead;
+      p.request = {kOne / 2, kOne / 2, 0, 0x8040'20FFu};
+      items.push_back(chip_param_item(p));
+    }
   }
   for (const Txn& t : chip_program_items(first_.file)) items.push_back(t);
   return items;

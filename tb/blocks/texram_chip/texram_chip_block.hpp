@@ -68,6 +68,8 @@ struct ChipScene {
   texram::Clut32 clut{};
 };
 ChipScene draw_chip_scene(uint64_t seed);
+// A chip's memory holding `maps` (each at its base) and its CLUT (maps and faces left empty).
+ChipScene chip_scene_of(const std::vector<ChipMapPlacement>& maps, const texram::Clut32& clut);
 
 // A DRF program: the seven DRFs and the DRFs a pixel may lead with (every DRF of a chain).
 struct ChipProgram {
@@ -88,6 +90,10 @@ ChipDetailDrfs chip_detail_drfs(std::mt19937_64& rng, const ChipScene& scene, si
 class TexramChipBlock : public DescribedBlockOf<TexramChipBlock> {
  public:
   explicit TexramChipBlock(const BlockOptions& options);
+  // A chip of a render: its memory and CLUT as the host placed them, `program` its DRFs.
+  // setup_items() loads the CLUT and the program; the block's own stimulus stays the drawn one.
+  TexramChipBlock(const BlockOptions& options, std::shared_ptr<const ChipScene> scene,
+                  const texram::chip::DrfFile& program);
 
   std::vector<Txn> setup_items() const override;
   TMU_BLOCK_PIECES;
@@ -105,6 +111,7 @@ class TexramChipBlock : public DescribedBlockOf<TexramChipBlock> {
 
   std::shared_ptr<const ChipScene> scene_;
   ChipProgram first_;
+  bool drawn_ = true;  // the scene was drawn from the seed (not a render's)
   std::string workload_;
   // cover() sees the items in order: the DRFs as written so far and the pixel in progress.
   mutable size_t cover_next_ = 0;

@@ -1,0 +1,120 @@
+#include "render/chip_stage.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "texram/chip/drf.hpp"
+
+namespace tmu::render {
+namespace {
+
+using D = tb::desc::texram_chip;
+
+// Why the chips cannot sample material m yet, or "".
+std::string why_not_on_chip(const host::Material& mat, const MaterialTexture& tex,
+                            const MaterialProgram& prog) {
+  if (prog.chip < 0) return prog.why;
+  if (samples_at_vertices(mat)) {
+    return "orders texture and composed sample at the vertices (the material's texture unit)";
+  }
+  if (mat.footprint) {
+    return "footprint assembly: the renderer does not send r1, r2 to the chip yet "
+           "(docs/texram_chip.md)";
+  }
+  if (mat.mipmaps == host::Material::Mipmaps::kMipgen || tex.mipgen_pending) {
+    return "the mipmap generator writes its own unit's banks, not a chip's memory yet";
+  }
+  return "";
+}
+
+}  // namespace
+
+ChipStage::ChipStage(const host::Scene& scene, const std::vector<MaterialTexture>& textures,
+                     int chips)
+    : scene_(scene), programs_(compile_drfs(scene, textures, chips)) {
+  memories_.resize(programs_.chips.size());
+  for (size_t m = 0; m < scene.materials.size(); ++m) {
+    why_not_.push_back(why_not_on_chip(scene.materials[m], textures[m], programs_.materials[m]));
+  }
+}
+
+std::vector<uint32_t> ChipStage::run_pass(
+    size_t m, size_t pass, std::vector<std::vector<texram::chip::PixelParameter>> params,
+    const std::vector<size_t>& frags, Level level, std::vector<UnitRun>& units,
+    std::vector<std::vector<size_t>>& outputs_of, std::vector<uint32_t>* emitted) {
+  if (!samples(m)) throw std::logic_error("ChipStage: material not on a chip: " + why_not(m));
+  const MaterialProgram& prog = programs_.materials[m];
+  const auto chip = static_cast<size_t>(prog.chip);
+  const ChipProgram& program = programs_.chips[chip];
+  std::shared_ptr<const tb::ChipScene> memory;
+  {
+    const std::lock_guard<std::mutex> lock(memories_mutex_);
+    if (!memories_[chip]) {
+      std::vector<tb::ChipMapPlacement> maps;
+      for (const ChipMap& c : program.maps) maps.push_back({{}, c.texture, c.base});
+      memories_[chip] = std::make_shared<const tb::ChipScene>(
+          tb::chip_scene_of(maps, program.clut.value_or(texram::Clut32{})));
+    }
+    memory = memories_[chip];
+  }
+
+  UnitRun unit;
+  unit.kind = "texram_chip";
+  unit.material = scene_.materials[m].name;
+  unit.role = prog.passes.size() > 1 && pass == 0 ? "bump" : "";
+  const auto block =
+      std::make_shared<tb::TexramChipBlock>(tb::BlockOptions{}, memory, program.drfs);
+  attach(unit, block);
+  unit.items = block->setup_items();  // the CLUT and the chip's DRF program
+  for (std::vector<texram::chip::PixelParameter>& pixel : params) {
+    pixel.front().lead = prog.passes.at(pass);
+    for (const texram::chip::PixelParameter& p : pixel)
+      unit.items.push_back(tb::chip_param_item(p));
+  }
+  // Each output's fragment: a pixel gives its emitted samples, then its colour (last).
+  run_unit(unit, level, {});
+  std::vector<uint32_t> colour;
+  std::vector<size_t> fragment_of_output;
+  for (const tb::Txn& t : unit.result.outputs) {
+    if (colour.size() >= frags.size())
+      throw std::logic_error("texram_chip: more pixels than given");
+    fragment_of_output.push_back(frags[colour.size()]);
+    const auto rgba = static_cast<uint32_t>(t.f[D::out_rgba]);
+    if (t.f[D::out_last]) {
+      colour.push_back(rgba);
+    } else if (emitted) {
+      emitted->push_back(rgba);
+    }
+  }
+  if (colour.size() != frags.size()) {
+    throw std::runtime_error(
+        "texram_chip[" + unit.material + "]: " + std::to_string(colour.size()) + " pixels out of " +
+        std::to_string(frags.size()) + (unit.result.error.empty() ? "" : ": " + unit.result.error));
+  }
+  units.push_back(std::move(unit));
+  outputs_of.push_back(std::move(fragment_of_output));
+  return colour;
+}
+
+std::vector<std::string> chip_lines(const host::Scene& scene, const ChipStage& chips) {
+  std::vector<std::string> lines;
+  for (size_t m = 0; m < scene.materials.size(); ++m) {
+    const std::string& name = scene.materials[m].name;
+    if (!chips.samples(m)) {
+      lines.push_back(name + ": separate units: " + chips.why_not(m));
+      continue;
+    }
+    const MaterialProgram& p = chips.programs().materials[m];
+    const ChipProgram& c = chips.programs().chips[static_cast<size_t>(p.chip)];
+    std::string passes;
+    for (int lead : p.passes) {
+      if (!passes.empty()) passes += " |";
+      for (int n : texram::chip::chain(c.drfs, lead)) passes += " " + std::to_string(n);
+    }
+    lines.push_back(fmt::format("{}: chip {}, DRF{}", name, p.chip, passes));
+  }
+  return lines;
+}
+
+}  // namespace tmu::render
