@@ -19,6 +19,7 @@
 
 extern "C" int tmu_fuzz_ccc(const uint8_t* data, size_t size);
 extern "C" int tmu_fuzz_scene(const uint8_t* data, size_t size);
+extern "C" int tmu_fuzz_volume_scene(const uint8_t* data, size_t size);
 extern "C" int tmu_fuzz_trace(const uint8_t* data, size_t size);
 extern "C" int tmu_fuzz_request(const uint8_t* data, size_t size);
 
@@ -33,6 +34,7 @@ struct Target {
 
 constexpr Target kTargets[] = {{"ccc", tmu_fuzz_ccc},
                                {"scene", tmu_fuzz_scene},
+                               {"volume_scene", tmu_fuzz_volume_scene},
                                {"trace", tmu_fuzz_trace},
                                {"request", tmu_fuzz_request}};
 
@@ -94,7 +96,8 @@ int usage() {
   std::fprintf(
       stderr,
       "usage: tmu_fuzz_replay CORPUS_DIR            (every target on CORPUS_DIR/<target>/)\n"
-      "       tmu_fuzz_replay TARGET FILE_OR_DIR... (targets: ccc scene trace request)\n");
+      "       tmu_fuzz_replay TARGET FILE_OR_DIR... (targets: ccc scene volume_scene trace "
+      "request)\n");
   return 2;
 }
 

@@ -514,4 +514,23 @@ tmu_mutant(texram_chip unreset FILE texram/tmu_texram_chip.sv EXPECT x-leak
   FROM "      pixels_q    <= '0;\n" TO ""
   WHY "the pixel counter starts where its flops happen to be")
 
+# The volume unit (000 §13, Fig. 15): rays -> resamples from the four level-0 banks, 2 or 8
+# accesses each (`texsim cosim volume`; docs/volume.md "The block").
+tmu_block(volume)
+tmu_mutant(volume address FILE volume/tmu_volume_address.sv
+  FROM "y_i[2:1], x_i[3:1]};" TO "y_i[2:1], x_i[2:0]};"
+  WHY "the cell's x bits are x[2:0] instead of x[3:1]: voxels 16 apart along x share a cell (wrong requests and values)")
+tmu_mutant(volume gradient_sign FILE volume/tmu_volume_blend.sv
+  FROM ": {2'b0, p} - {2'b0, m};" TO ": {2'b0, m} - {2'b0, p};"
+  WHY "the central difference inside the volume is f(x - 1) - f(x + 1): every gradient component points the wrong way")
+tmu_mutant(volume rounding FILE volume/tmu_volume_blend.sv
+  FROM "assign value_sum = sum + 34'(1 << 23);" TO "assign value_sum = sum;"
+  WHY "the value's blend truncates instead of rounding half up (golden fx::trilerp)")
+tmu_mutant(volume step_sign FILE volume/tmu_volume_march.sv
+  FROM "{{(PW - SW){step_q[a*SW + SW - 1]}}, step_q[a*SW +: SW]}" TO "{(PW - SW)'(0), step_q[a*SW +: SW]}"
+  WHY "the marcher adds the step without its sign: a negative step moves 16 voxels forward instead of back")
+tmu_mutant(volume unreset FILE volume/tmu_volume.sv EXPECT x-leak
+  FROM "      resamples_q <= '0;\n" TO ""
+  WHY "the resample counter starts where its flops happen to be")
+
 tmu_write_block_tables()

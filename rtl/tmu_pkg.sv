@@ -370,6 +370,16 @@ package tmu_pkg;
   localparam int unsigned VolumeGradFrac = 4;
   typedef logic signed [VolumeGradW-1:0] volume_grad_t;
 
+  // VolumeWeightBits: UQ4.0, volume: W, the weight bits per axis of the trilinear blend, 1..8
+  localparam int unsigned VolumeWeightBitsW = 4;
+  localparam int unsigned VolumeWeightBitsFrac = 0;
+  typedef logic [VolumeWeightBitsW-1:0] volume_weight_bits_t;
+
+  // VolumePattern: UQ2.0, harness only, not a port: what a volume holds: 0 random bytes, 1 Marschner-Lobb, 2 sphere distance field, 3 linear ramp
+  localparam int unsigned VolumePatternW = 2;
+  localparam int unsigned VolumePatternFrac = 0;
+  typedef logic [VolumePatternW-1:0] volume_pattern_t;
+
   // VideoFlags: UQ4.0, video port item: bit 0 first of frame, 1 first of field, 2 first of line, 3 field 2 (an odd line of an interlaced frame)
   localparam int unsigned VideoFlagsW = 4;
   localparam int unsigned VideoFlagsFrac = 0;

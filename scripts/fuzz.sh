@@ -11,7 +11,7 @@
 #   --max-corpus N   files a target's corpus may grow to by merging (default 50)
 #   --no-build       use the fuzzers already built (e.g. a second run beside a first one)
 #   --no-merge       leave fuzz/corpus/ as it is
-#   TARGET           ccc, scene, trace, request (default: all four)
+#   TARGET           ccc, scene, volume_scene, trace, request (default: all five)
 #
 # Prints per target the runs, executions per second, coverage, new corpus files and any finding
 # (crash, sanitizer report, broken check, uncaught exception, timeout, out of memory) with the
@@ -22,7 +22,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${TMU_FUZZ_BUILD_DIR:-$root/build-fuzz-clang}
-all_targets=(ccc scene trace request)
+all_targets=(ccc scene volume_scene trace request)
 
 seconds=60
 max_corpus=50

@@ -54,6 +54,12 @@ SPECS = {
         cells=["triangles"], cells_name="triangles", time="front end s",
         time_name="front-end seconds (tessellation + rasterization)", invert=False, xlog=True,
         title="nurbs: error against triangles and front-end time (order tc)"),
+    "volume": dict(
+        label="W,step", default="8,1", error="value RMS",
+        error_name="resampled value RMS error vs ideal (voxel values)", cells=None,
+        cells_name=None, time="frame ms", time_name="unit ms per frame (30 ns an access)",
+        invert=False, xlog=True,
+        title="volume: error against the unit's time (weight bits W, step in voxels)"),
     "perlin": dict(
         label="F,S,B,X", default="8,8,8,4", error="P mean", error_name="noise mean error",
         cells=["noise cells"], cells_name="noise unit cells", time="golden ns/sample",

@@ -19,6 +19,7 @@
 
 #include "volume/layout.hpp"
 #include "volume/marcher.hpp"
+#include "volume/ray_sets.hpp"
 #include "volume/sources.hpp"
 #include "volume/unit.hpp"
 #include "volume/volume_ideal.hpp"
@@ -457,6 +458,38 @@ TEST(VolumeUnitTest, ValueModeReadsTwiceRawModeEightTimes) {
   }
 }
 
+// blend() is what a unit with a memory port computes from the bytes its accesses brought back
+// (the hls model): the same as resample() whatever an idle bank delivers; it rejects a
+// location without the mode's accesses.
+TEST(VolumeUnitTest, BlendReadsOnlyWhatTheAccessesDelivered) {
+  const VoxelGrid g = random_grid(7, 5, 9, 17);
+  const VolumeMemory mem = load(g);
+  std::mt19937_64 rng(18);
+  for (int i = 0; i < 3000; ++i) {
+    const Position pos = {static_cast<int32_t>(rng() % (9 << 16)) - (1 << 16),
+                          static_cast<int32_t>(rng() % (7 << 16)) - (1 << 16),
+                          static_cast<int32_t>(rng() % (11 << 16)) - (1 << 16)};
+    const Config config{rng() % 2 ? Mode::kRaw : Mode::kValue, 1 + static_cast<int>(rng() % 8)};
+    const std::vector<Access> plan = plan_accesses(mem.geometry, pos, config.mode);
+    std::vector<AccessData> bytes(plan.size());
+    for (size_t a = 0; a < plan.size(); ++a) {
+      for (size_t b = 0; b < kVolumeBanks; ++b) {
+        bytes[a][b] = plan[a].address[b] ? mem.banks[b][*plan[a].address[b]]
+                                         : static_cast<uint8_t>(rng());  // idle: garbage
+      }
+    }
+    ASSERT_EQ(blend(mem.geometry, config, pos, plan, bytes), resample(mem, config, pos)) << i;
+  }
+  const Position pos = {1 << 16, 1 << 16, 1 << 16};
+  std::vector<Access> plan = plan_accesses(mem.geometry, pos, Mode::kRaw);
+  std::vector<AccessData> bytes(plan.size());
+  EXPECT_THROW(blend(mem.geometry, {Mode::kValue, 8}, pos, plan, bytes), std::invalid_argument);
+  plan.pop_back();
+  bytes.pop_back();
+  EXPECT_THROW(blend(mem.geometry, {Mode::kRaw, 8}, pos, plan, bytes), std::invalid_argument);
+  EXPECT_THROW(blend(mem.geometry, {Mode::kRaw, 0}, pos, plan, bytes), std::invalid_argument);
+}
+
 // ---- sources -------------------------------------------------------------------------------
 
 TEST(VolumeSourcesTest, MarschnerLobb) {
@@ -467,6 +500,17 @@ TEST(VolumeSourcesTest, MarschnerLobb) {
   EXPECT_EQ(g.at(20, 20, 20), 153);
   EXPECT_EQ(g.at(20, 20, 40), 51);                                      // 0.2 * 255
   EXPECT_EQ(*std::max_element(g.voxels.begin(), g.voxels.end()), 255);  // f = 1: z = -1, rho = 1
+}
+
+// The field on a grid of other sides per axis (the co-simulation block's volumes): each axis
+// over [-1, 1], the cube's voxels where the sides agree.
+TEST(VolumeSourcesTest, MarschnerLobbOnABox) {
+  const VoxelGrid box = marschner_lobb_grid(41, 21, 11);
+  const VoxelGrid cube = marschner_lobb_grid(41);
+  EXPECT_EQ(box.at(20, 10, 5), 153);                   // the centre (0, 0, 0)
+  EXPECT_EQ(box.at(40, 20, 10), cube.at(40, 40, 40));  // the corner (1, 1, 1)
+  EXPECT_EQ(box.at(0, 0, 0), cube.at(0, 0, 0));
+  EXPECT_EQ(box.at(12, 4, 5), cube.at(12, 8, 20));  // (-0.4, -0.6, 0)
 }
 
 // The reconstruction error on Marschner-Lobb's 41^3 grid (its customary sampling, 2/40 per
@@ -578,32 +622,6 @@ Figures run_rays(const VolumeMemory& mem, Mode mode, const std::vector<Ray>& ray
   return f;
 }
 
-// The ray sets of docs/volume.md, over an X x Y x Z volume, one resample per voxel:
-// z: rays along +z from (i + 0.5, j + 0.5, 0.5), i fastest; x: along +x from
-// (0.5, j + 0.5, k + 0.5); oblique: from (i + 0.5, j + 0.5, 0.5) with step (1/8, 1/16, 1)
-// (leaving the side faces: clamped).
-std::vector<Ray> ray_set(const std::string& name, uint32_t nx, uint32_t ny, uint32_t nz) {
-  std::vector<Ray> rays;
-  const int32_t h = 1 << 15;
-  if (name == "x") {
-    for (uint32_t k = 0; k < nz; ++k) {
-      for (uint32_t j = 0; j < ny; ++j) {
-        rays.push_back({{h, int32_t(j << 16) + h, int32_t(k << 16) + h}, {1 << 16, 0, 0}, nx});
-      }
-    }
-    return rays;
-  }
-  const std::array<int32_t, 3> step = name == "z"
-                                          ? std::array<int32_t, 3>{0, 0, 1 << 16}
-                                          : std::array<int32_t, 3>{1 << 13, 1 << 12, 1 << 16};
-  for (uint32_t j = 0; j < ny; ++j) {
-    for (uint32_t i = 0; i < nx; ++i) {
-      rays.push_back({{int32_t(i << 16) + h, int32_t(j << 16) + h, h}, step, nz});
-    }
-  }
-  return rays;
-}
-
 // The patent's two data sets on four chips (000 §5): a 64 x 128 x 128 RGBA set, one
 // component per chip (each chip resamples all 1 M locations, value mode); a 256 x 128 x 128
 // raw set in four 64 x 128 x 128 slabs, one per chip (each chip 1 M locations of its slab,
@@ -626,7 +644,7 @@ TEST(VolumeFiguresTest, PatentDataSets) {
   std::cout << "set     mode   acc/res faults/res slow/res  time_ms (four chips)\n";
   for (const char* set : {"z", "x", "oblique"}) {
     for (Mode mode : {Mode::kValue, Mode::kRaw}) {
-      const Figures f = run_rays(mem, mode, ray_set(set, 64, 128, 128));
+      const Figures f = run_rays(mem, mode, figure_rays(set, 64, 128, 128));
       EXPECT_EQ(f.resamples, 64.0 * 128 * 128);
       EXPECT_EQ(f.accesses, f.resamples * accesses_per_resample(mode));
       const size_t m = mode == Mode::kRaw ? 2 : 0;

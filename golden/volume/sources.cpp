@@ -14,20 +14,22 @@ uint8_t to_voxel(double v) {
 
 }  // namespace
 
-double marschner_lobb(double x, double y, double z) {
-  constexpr double kPi = std::numbers::pi, kFm = 6.0, kAlpha = 0.25;
+double marschner_lobb(double x, double y, double z, const MarschnerLobb& p) {
+  constexpr double kPi = std::numbers::pi;
   const double r = std::sqrt(x * x + y * y);
-  const double rho = std::cos(2 * kPi * kFm * std::cos(kPi * r / 2));
-  return (1 - std::sin(kPi * z / 2) + kAlpha * (1 + rho)) / (2 * (1 + kAlpha));
+  const double rho = std::cos(2 * kPi * p.f_m * std::cos(kPi * r / 2));
+  return (1 - std::sin(kPi * z / 2) + p.alpha * (1 + rho)) / (2 * (1 + p.alpha));
 }
 
-VoxelGrid marschner_lobb_grid(uint32_t n) {
-  VoxelGrid g(n, n, n);
-  auto c = [n](uint32_t i) { return -1.0 + 2.0 * i / (n - 1); };
-  for (uint32_t k = 0; k < n; ++k) {
-    for (uint32_t j = 0; j < n; ++j) {
-      for (uint32_t i = 0; i < n; ++i)
-        g.at(i, j, k) = to_voxel(255 * marschner_lobb(c(i), c(j), c(k)));
+VoxelGrid marschner_lobb_grid(uint32_t n) { return marschner_lobb_grid(n, n, n, {}); }
+
+VoxelGrid marschner_lobb_grid(uint32_t nx, uint32_t ny, uint32_t nz, const MarschnerLobb& p) {
+  VoxelGrid g(nx, ny, nz);
+  auto c = [](uint32_t i, uint32_t n) { return -1.0 + 2.0 * i / (n - 1); };
+  for (uint32_t k = 0; k < nz; ++k) {
+    for (uint32_t j = 0; j < ny; ++j) {
+      for (uint32_t i = 0; i < nx; ++i)
+        g.at(i, j, k) = to_voxel(255 * marschner_lobb(c(i, nx), c(j, ny), c(k, nz), p));
     }
   }
   return g;

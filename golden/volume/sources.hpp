@@ -18,8 +18,16 @@
 
 namespace tmu::volume {
 
-double marschner_lobb(double x, double y, double z);  // f in [0, 1]
+// The test signal's two parameters: the ripples' frequency f_M and their amplitude alpha.
+struct MarschnerLobb {
+  double f_m = 6.0, alpha = 0.25;
+};
+double marschner_lobb(double x, double y, double z, const MarschnerLobb& p = {});  // f in [0, 1]
 VoxelGrid marschner_lobb_grid(uint32_t n);
+// Any grid size: voxel (i, j, k) samples -1 + 2 (i, j, k) / (n - 1) per axis, each axis over
+// [-1, 1] (a stretched field where the sizes differ).
+VoxelGrid marschner_lobb_grid(uint32_t nx, uint32_t ny, uint32_t nz,
+                             const MarschnerLobb& p = {});
 
 VoxelGrid sphere_grid(uint32_t nx, uint32_t ny, uint32_t nz, double radius, double slope);
 // The sphere's centre in voxel coordinates for that grid.

@@ -112,20 +112,20 @@ std::array<std::optional<uint32_t>, 8> page_addresses(const Access& access) {
   return a;
 }
 
-Resample resample(const VolumeMemory& memory, const Config& config, const Position& pos,
-                  texram::PageModel* pages, std::vector<Access>* accesses) {
-  const VolumeGeometry& g = memory.geometry;
+Resample blend(const VolumeGeometry& g, const Config& config, const Position& pos,
+               const std::vector<Access>& accesses, const std::vector<AccessData>& bytes) {
   const int w = config.weight_bits;
   if (w < 1 || w > 8) throw std::invalid_argument("volume: weight bits 1..8");
+  if (accesses.size() != static_cast<size_t>(accesses_per_resample(config.mode)) ||
+      bytes.size() != accesses.size()) {
+    throw std::invalid_argument("volume: a location needs the mode's accesses and their data");
+  }
   const std::array<AxisCorners, 3> c = corners(g, pos, w);
   Delivered data(c);
-  for (const Slab& s : schedule(c, config.mode)) {
-    const Access a = layout_access(g, s);
+  for (size_t i = 0; i < accesses.size(); ++i) {
     for (size_t b = 0; b < kVolumeBanks; ++b) {
-      if (a.voxel[b]) data.put(*a.voxel[b], memory.banks[b][*a.address[b]]);
+      if (accesses[i].voxel[b]) data.put(*accesses[i].voxel[b], bytes[i][b]);
     }
-    if (pages) pages->access(page_addresses(a));
-    if (accesses) accesses->push_back(a);
   }
   const std::array<uint32_t, 3> n = {g.nx(), g.ny(), g.nz()};
   // Corner k = x + 2 y + 4 z of the cell.
@@ -158,6 +158,24 @@ Resample resample(const VolumeMemory& memory, const Config& config, const Positi
     r.gradient[a] = static_cast<int32_t>(fx::trilerp(d, c[0].w, c[1].w, c[2].w, w, kGradFrac - 1));
   }
   return r;
+}
+
+Resample resample(const VolumeMemory& memory, const Config& config, const Position& pos,
+                  texram::PageModel* pages, std::vector<Access>* accesses) {
+  if (config.weight_bits < 1 || config.weight_bits > 8) {
+    throw std::invalid_argument("volume: weight bits 1..8");
+  }
+  const VolumeGeometry& g = memory.geometry;
+  const std::vector<Access> plan = plan_accesses(g, pos, config.mode);
+  std::vector<AccessData> bytes(plan.size());
+  for (size_t i = 0; i < plan.size(); ++i) {
+    for (size_t b = 0; b < kVolumeBanks; ++b) {
+      if (plan[i].address[b]) bytes[i][b] = memory.banks[b][*plan[i].address[b]];
+    }
+    if (pages) pages->access(page_addresses(plan[i]));
+    if (accesses) accesses->push_back(plan[i]);
+  }
+  return blend(g, config, pos, plan, bytes);
 }
 
 std::vector<Resample> cast(const VolumeMemory& memory, const Config& config, const Ray& ray,

@@ -54,6 +54,7 @@ inline constexpr int accesses_per_resample(Mode mode) {
 struct Config {
   Mode mode = Mode::kValue;
   int weight_bits = 8;  // W, 1..8
+  friend bool operator==(const Config&, const Config&) = default;
 };
 
 // The volume in the four level-0 banks.
@@ -92,9 +93,21 @@ struct Resample {
   friend bool operator==(const Resample&, const Resample&) = default;
 };
 
+// The bytes one access delivered: bank b's in slot b (anything where the bank idled).
+using AccessData = std::array<uint8_t, kVolumeBanks>;
+
+// The blends of one location from what its accesses (plan_accesses' order and count for the
+// mode) delivered, as a unit with a memory port gets them back (the hls model): the corner
+// values and, in raw mode, the central differences, through fx::trilerp. A byte of a bank
+// that idled is never read. std::logic_error if the schedule missed a voxel the blends need,
+// std::invalid_argument for a weight width outside 1..8 or an access count that is not the
+// mode's.
+Resample blend(const VolumeGeometry& geometry, const Config& config, const Position& pos,
+               const std::vector<Access>& accesses, const std::vector<AccessData>& data);
+
 // The unit: accesses (recorded in `accesses` when given, appended), the blends; the page
 // model (when given) sees every access. The arithmetic reads only what the accesses
-// delivered (std::logic_error if the schedule missed a voxel it needs).
+// delivered (blend(); std::logic_error if the schedule missed a voxel it needs).
 Resample resample(const VolumeMemory& memory, const Config& config, const Position& pos,
                   texram::PageModel* pages = nullptr, std::vector<Access>* accesses = nullptr);
 

@@ -23,7 +23,8 @@ struct RenderOptions {
   std::string save_trace;      // write the fragment records here
   std::string replay_trace;    // take the fragment records from here instead of the front end
   int inject_fault = -1;       // flip a bit of this fragment's result (proves --check catches it)
-  int chips = 0;               // > 0: the maps through this many TEXRAM chips (render/chip_stage)
+  int chips = 0;               // TEXRAM chips: a surface scene's maps through them (render/chip_stage),
+                               // a volume scene's slabs over them; 0: none, the volume's own key
   int jobs = 1;                // materials shaded at once (Pipeline::set_jobs)
 };
 

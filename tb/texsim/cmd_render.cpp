@@ -11,7 +11,9 @@
 #include "render/flyover.hpp"
 #include "render/render.hpp"
 #include "render/tiles.hpp"
+#include "render/volume_render.hpp"
 #include "texsim/commands.hpp"
+#include "volume/volume_scene.hpp"
 
 namespace tmu::texsim {
 
@@ -21,7 +23,9 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
       "Render a scene (scenes/README.md) through the texture unit: the host front end rasterizes "
       "it, every\n"
       "fragment goes through the units its material's chain calls for, at the chosen model level.\n"
-      "Writes OUT/render.png (and render.exr for ideal) and OUT/render.report.{json,txt}.");
+      "Writes OUT/render.png (and render.exr for ideal) and OUT/render.report.{json,txt}.\n"
+      "A volume scene (a \"volume\" section) is ray-cast through the volume unit (000 §13) at "
+      "ideal or golden.");
   struct Args {
     std::string scene, engine = "golden", check, compare, tile, frames;
     bool waveform = false, no_progress = false;
@@ -57,10 +61,12 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
                   "A fly-over scene (a \"flyover\" section, render/flyover.hpp): the frames A-B "
                   "(default every frame of its path)");
   cmd->add_option("--chips", a->options.chips,
-                  "Sample the materials' maps on this many TEXRAM chips (000 §14): each material "
-                  "compiled to DRFs\n(texsim drf shows them), its maps and specular combine one "
-                  "texram_chip unit; the report lists\nthe materials that stay on separate units "
-                  "and why (0: every map its own unit)")
+                  "TEXRAM chips (000 §14). A surface scene: its materials' maps sampled on them, each "
+                  "material compiled\nto DRFs (texsim drf shows them), its maps and specular "
+                  "combine one texram_chip unit; the report\nlists the materials that stay on "
+                  "separate units and why (0: every map its own unit). A volume scene\n(docs/"
+                  "volume.md): its volume in this many slabs, one a chip (0: the scene's \"chips\", "
+                  "else 1)")
       ->check(CLI::Range(0, 64))
       ->capture_default_str();
   a->options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -79,6 +85,11 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
     o.waveform = a->waveform;
     o.progress = !a->no_progress;
     if (!a->tile.empty()) std::tie(o.tile, o.tiles) = render::parse_tile(a->tile);
+    if (host::is_volume_scene(a->scene)) {
+      if (!a->frames.empty()) throw InputError(a->scene, "", "--frames is for a fly-over scene");
+      exit_code.value = render::render_volume(a->scene, o, std::cout);
+      return;
+    }
     if (render::is_flyover(a->scene)) {
       if (o.chips > 0) {
         throw InputError(a->scene, "flyover",

@@ -31,6 +31,7 @@
 #include "texsim/sweep_nurbs.hpp"
 #include "texsim/sweep_perlin.hpp"
 #include "texsim/sweep_support.hpp"
+#include "texsim/sweep_volume.hpp"
 
 namespace tmu::texsim {
 namespace {
@@ -225,6 +226,12 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       "size and interpolation against the functional map, rtl = golden; the orders pc, tc, "
       "texture, composed\n"
       "on a sphere (docs/nurbs.md).\n"
+      "volume: the volume unit (000 §13) per weight bits and step W,step on a volume scene: the "
+      "resamples' value and\n"
+      "gradient error against the ideal, the frame's PSNR, accesses and page faults per "
+      "resample; the patent's\n"
+      "two data sets on four chips at 30 ns an access beside its 70 ms and 0.28 s "
+      "(docs/volume.md).\n"
       "all: every sweep above, the model-level table (texsim levels) and the default scene at "
       "every engine, with\n"
       "a plot per block (scripts/plot_accuracy.py): writes DIR/accuracy.md and DIR/accuracy/ "
@@ -238,10 +245,10 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
   auto fp = std::make_shared<FootprintSweepArgs>();
   cmd->add_option("block", args->block,
                   "trilinear | footprint | footprint-setup | deflection | perlin | mipgen | "
-                  "clipmap | nurbs | all")
+                  "clipmap | nurbs | volume | all")
       ->required()
       ->check(CLI::IsMember({"trilinear", "footprint", "footprint-setup", "deflection", "perlin",
-                             "mipgen", "clipmap", "nurbs", "all"}));
+                             "mipgen", "clipmap", "nurbs", "volume", "all"}));
   cmd->add_option("--settings", args->settings,
                   "trilinear: width settings S,W,L separated by ';' (footprint-setup: D,T,F; "
                   "default " +
@@ -252,7 +259,8 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
                       ClipmapSweepArgs{}.settings +
                       "; nurbs: tessellation rows of mc=, dc=, tc=, g=, max= terms joined by '+', "
                       "default " +
-                      NurbsSweepArgs{}.settings + ")")
+                      NurbsSweepArgs{}.settings + "; volume: W,step, default " +
+                      VolumeSweepArgs{}.settings + ")")
       ->capture_default_str();
   cmd->add_option("--requests", args->requests,
                   "trilinear, footprint-setup, nurbs: random requests for the error statistics "
@@ -269,7 +277,8 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
          "footprint: the scene (default scenes/grazing.json); deflection: the fragments of its "
          "materials with a deflection chain (default a synthetic bump-mapped sphere); perlin: "
          "its procedural materials (default scenes/procedural.json); nurbs: the scene of the "
-         "threshold table (default scenes/nurbs_freeform.json); all: the scene rendered at "
+         "threshold table (default scenes/nurbs_freeform.json); volume: a volume scene (default "
+         "scenes/volume_marschner_lobb.json); all: the scene rendered at "
          "every "
          "engine (default scenes/default.json)")
       ->check(CLI::ExistingFile);
@@ -279,7 +288,8 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       ->check(CLI::Range(1, 16));
   cmd->add_flag("--quick", fp->quick,
                 "footprint: half the frame and k = 4; nurbs: half the frames' resolution, 20000 "
-                "tau samples, 1000 at rtl (for tests)");
+                "tau samples, 1000 at rtl; volume: a 48 x 48 frame, the data sets at step 1 only "
+                "(for tests)");
   auto log2_virtual = std::make_shared<int>(ClipmapSweepArgs{}.log2_virtual);
   cmd->add_option("--log2-virtual", *log2_virtual,
                   "clipmap: log2 of the terrain's side (up to 10 the frames are also rendered from "
@@ -377,6 +387,17 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       a.quick = fp->quick;
       a.markdown = args->markdown;
       sweep_nurbs(a);
+    } else if (args->block == "volume") {
+      for (const char* o : {"--k", "--requests", "--no-synth"}) {
+        if (cmd->count(o) > 0) throw CLI::ValidationError(o, "not for `sweep volume`");
+      }
+      VolumeSweepArgs a;
+      if (cmd->count("--settings") > 0) a.settings = args->settings;
+      a.scene = fp->scene;
+      a.quick = fp->quick;
+      a.out_dir = args->out_dir;
+      a.markdown = args->markdown;
+      sweep_volume(a);
     } else if (args->block == "footprint") {
       for (const char* o : {"--settings", "--requests", "--no-synth"}) {
         if (cmd->count(o) > 0) throw CLI::ValidationError(o, "only for `sweep trilinear`");

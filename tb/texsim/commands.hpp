@@ -24,5 +24,6 @@ void add_mipgen_command(CLI::App& app, ExitCode& exit_code);
 void add_sweep_command(CLI::App& app, ExitCode& exit_code);
 void add_render_command(CLI::App& app, ExitCode& exit_code);
 void add_levels_command(CLI::App& app, ExitCode& exit_code);
+void add_volume_gen_command(CLI::App& app, ExitCode& exit_code);
 
 }  // namespace tmu::texsim

@@ -26,6 +26,7 @@ struct CosimArgs {
   std::string encoder;                // normal_encoder: S,E,M
   std::string coord_tables;           // coord_gen: A,W
   std::string fractal = "pipelined";  // turbulence: pipelined | shared
+  std::string volume_mode;            // volume: value | raw; empty: drawn
 };
 
 namespace {
@@ -169,6 +170,17 @@ std::shared_ptr<CosimArgs> add_cosim_options(CLI::App& app) {
                  "12,7,8; rtl variants: " +
                      variant_options("footprint") + ")");
 
+  auto* vol = cmd->add_option_group("volume", "volume: the mode and the rays");
+  vol->add_option("--volume-mode", args->volume_mode,
+                  "the mode of every volume drawn: value (2 accesses a resample) | raw (8, with "
+                  "the gradient); default drawn per volume")
+      ->check(CLI::IsMember({"value", "raw"}));
+  vol->add_option("--volume-rays", args->block_options.vol_rays,
+                  "run a figure's ray set through a 64 x 128 x 128 volume instead of the "
+                  "directed and random rays (--count rays, in order; docs/volume.md): z | x | "
+                  "oblique")
+      ->check(CLI::IsMember({"z", "x", "oblique"}));
+
   return args;
 }
 
@@ -236,6 +248,7 @@ CosimRequest finish(const CosimArgs& in) {
     t.grid = deflect::SphereGrid{phi_bits};
   }
   b.fractal_shared = args->fractal == "shared";
+  if (!args->volume_mode.empty()) b.vol_mode = args->volume_mode == "raw" ? 1 : 0;
   return {args->block, args->cosim, args->block_options};
 }
 

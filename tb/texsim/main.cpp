@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   tmu::texsim::add_levels_command(app, exit_code);
   tmu::texsim::add_pattern_command(app, exit_code);
   tmu::texsim::add_terrain_command(app, exit_code);
+  tmu::texsim::add_volume_gen_command(app, exit_code);
   tmu::texsim::add_nurbs_command(app, exit_code);
   tmu::texsim::add_drf_command(app, exit_code);
   tmu::texsim::add_regress_command(app, exit_code);

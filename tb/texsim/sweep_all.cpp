@@ -22,6 +22,7 @@
 #include "texsim/sweep_nurbs.hpp"
 #include "texsim/sweep_perlin.hpp"
 #include "texsim/sweep_support.hpp"
+#include "texsim/sweep_volume.hpp"
 
 namespace tmu::texsim {
 namespace {
@@ -111,6 +112,18 @@ const Section kSections[] = {
      "row). "
      "Below: the tau unit's grid against the functional map, and the four composition orders.",
      "nurbs.md"},
+    {"Volume rendering (000 §13)", "volume",
+     "Settings W,step: the volume unit's weight bits and the ray's step in voxels; 8,1 is the "
+     "default. The Marschner-Lobb scene (scenes/volume_marschner_lobb.json, raw, shaded) "
+     "rendered without early termination at golden and at ideal. Error: every resample's value "
+     "and gradient component (voxel values, and per voxel) against the ideal's at the real "
+     "ray's location (the host's quantisation of start and step, the truncated weights, the "
+     "roundings), max and RMS; the frame's PSNR against the ideal frame (both 8-bit; the rows "
+     "ideal are the ideal against itself). Cost: accesses and page faults per resample and the "
+     "frame's unit time at 30 ns an access (the page model's counts), and the patent's two "
+     "data sets on four chips at that step (below in full). No RTL yet: no cells or depth "
+     "(the block is being built).",
+     "volume.md"},
 };
 
 void run_block_sweeps(const SweepAllArgs& args, const fs::path& data) {
@@ -153,6 +166,10 @@ void run_block_sweeps(const SweepAllArgs& args, const fs::path& data) {
   NurbsSweepArgs nurbs;
   nurbs.markdown = md("nurbs");
   sweep_nurbs(nurbs);
+
+  VolumeSweepArgs volume;
+  volume.markdown = md("volume");
+  sweep_volume(volume);
 }
 
 // The first line of `path` holding `key` (e.g. "model name" in /proc/cpuinfo), after its ':'.
@@ -233,6 +250,15 @@ std::string section_tail(const std::string& stem, const fs::path& data) {
            "the unit-by-unit check against golden (rtl = golden: every pixel and every unit's "
            "outputs, requests and counters).\n\n" +
            read_file(data / "nurbs_orders.md") + "\n";
+  }
+  if (stem == "volume") {
+    return "### Volume rendering: the patent's two data sets on four chips\n\n"
+           "Rays along z, one a voxel column, i fastest (step 1: one resample per voxel, the "
+           "patent's case), each data set in four slabs along x with their ghost planes "
+           "(docs/volume.md), the time the slowest chip's at 30 ns an access and one more on a "
+           "page fault. RGBA: each chip resamples the four components of its slab in value mode "
+           "(as many accesses a chip as one component of the whole set a chip).\n\n" +
+           read_file(data / "volume_patent.md") + "\n";
   }
   return "";
 }

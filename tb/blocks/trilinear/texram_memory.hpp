@@ -44,13 +44,16 @@ Counters page_counters(const texram::PageStats& stats);
 // The eight banks in a timed run. An accepted access takes the page model's periods: ready is
 // low for the extra period of a fault, and the response (every bank's byte; random bytes in the
 // banks not read) is valid the cycle the access completes: the cycle after it was accepted on a
-// page hit, two cycles after on a fault. Responses come in order. An access that reads no bank,
-// or a cell beyond a bank, fails the run. A configuration item loads the texture it names into
-// the banks (the open pages stay open: the page model runs on across textures, as golden's).
+// page hit, two cycles after on a fault. Responses come in order. A cell beyond a bank fails the
+// run, and so does an access that reads no bank unless `empty_accesses` (the volume unit's fixed
+// schedule: an access whose voxels are all outside the volume still takes its period and is
+// one access of the page model; its response is garbage). A configuration item loads the
+// texture it names into the banks (the open pages stay open: the page model runs on across
+// textures, as golden's).
 class TexramMemory : public Environment {
  public:
   using TextureOf = std::function<std::shared_ptr<const texram::TexramTexture>(const Txn& cfg)>;
-  TexramMemory(TextureOf texture_of, uint64_t seed);
+  TexramMemory(TextureOf texture_of, uint64_t seed, bool empty_accesses = false);
 
   void configure(const Txn& cfg) override { texture_ = texture_of_(cfg); }
   void drive(EnvPorts& ports) override;
@@ -67,6 +70,7 @@ class TexramMemory : public Environment {
     uint64_t data;  // bank b's byte at bits 8b + 7 .. 8b
   };
   TextureOf texture_of_;
+  bool empty_accesses_ = false;
   std::shared_ptr<const texram::TexramTexture> texture_;
   std::mt19937_64 rng_;
   texram::PageModel pages_;
