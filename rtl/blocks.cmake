@@ -489,13 +489,14 @@ tmu_mutant(tau unreset FILE tau/tmu_tau.sv EXPECT x-leak
 
 
 # The TEXRAM chip (000 §14): seven linked DRFs, the trilinear unit on each map at its base,
+# footprint assembly (§10) and detail maps (§9) per DRF,
 # eq. 6-7 per pixel (`texsim cosim texram_chip`; docs/texram_chip.md "The chip block").
 tmu_block(texram_chip)
-tmu_mutant(texram_chip base FILE texram/tmu_texram_chip.sv
+tmu_mutant(texram_chip base FILE texram/tmu_texram_step.sv
   FROM "tri_addr[b*AddrW +: AddrW] + base" TO "tri_addr[b*AddrW +: AddrW]"
   WHY "the map's base is not added: every map is read at cell 0 of the banks (wrong requests and colours)")
 tmu_mutant(texram_chip link FILE texram/tmu_texram_chip.sv
-  FROM "num_d   = link;" TO "num_d   = '0;"
+  FROM "num_d   = next_drf;" TO "num_d   = '0;"
   WHY "the link is ignored: every chain ends after its leading DRF (missing parameters deadlock, colours wrong)")
 tmu_mutant(texram_chip reflectance FILE texram/tmu_texram_chip.sv
   FROM "if (!have_refl_q) refl_d = constant_rgba;" TO "refl_d = constant_rgba;"
@@ -503,6 +504,12 @@ tmu_mutant(texram_chip reflectance FILE texram/tmu_texram_chip.sv
 tmu_mutant(texram_chip reset FILE texram/tmu_texram_drf_file.sv
   FROM "shape_q[n]    <= ShapeReset;" TO "shape_q[n]    <= '0;"
   WHY "the DRFs reset with filter nearest, not golden's trilinear: the pixels before the first program read other banks")
+tmu_mutant(texram_chip fp_round FILE footprint/tmu_footprint_average.sv
+  FROM "(SumW'(1 << head_k) >> 1)" TO "SumW'(0)"
+  WHY "footprint assembly's average truncates instead of rounding half up (colours one level low)")
+tmu_mutant(texram_chip detail_level FILE texram/tmu_texram_detail.sv
+  FROM "lambda_d = in_lambda_i + (Level <<< 2);" TO "lambda_d = in_lambda_i + Level * 3;"
+  WHY "the detail map is read one level too fine (lambda + 3, not + 4)")
 tmu_mutant(texram_chip unreset FILE texram/tmu_texram_chip.sv EXPECT x-leak
   FROM "      pixels_q    <= '0;\n" TO ""
   WHY "the pixel counter starts where its flops happen to be")

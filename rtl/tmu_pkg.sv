@@ -414,6 +414,9 @@ package tmu_pkg;
   // TEXRAM chip: description register files, numbered 1..7; 7 holds a cube map
   localparam int unsigned Drfs = 7;
 
+  // TEXRAM memory: a DRAM page holds 2^9 = 512 cells of a bank (the page model; maps, and a v-offset map after its u map, start on a page)
+  localparam int unsigned PageLog2 = 9;
+
   // footprint assembly: at most 2^4 = 16 probes per fragment
   localparam int unsigned MaxProbeLog2 = 4;
 

@@ -9,9 +9,11 @@
 #include <cstdint>
 #include <optional>
 
+#include "formats/formats.hpp"
+
 namespace tmu::texram {
 
-inline constexpr int kPageBits = 9;  // 512 cells per DRAM page
+inline constexpr int kPageBits = formats::kPageLog2;  // 512 cells per DRAM page
 inline constexpr uint32_t kPageCells = uint32_t{1} << kPageBits;
 // `cells` rounded up to whole pages: where the next page-aligned map may start.
 constexpr uint32_t page_up(uint64_t cells) {

@@ -1,9 +1,10 @@
 // SystemC model of the TEXRAM chip (000 §14; docs/texram_chip.md), the same ports (TMU_SC_PORTS:
 // tb/blocks/texram_chip/texram_chip.json) and handshakes as rtl/texram/tmu_texram_chip.sv. Its
 // datapath is the golden model's: the DRF write decode (texram::chip::apply), the sequencer's
-// walk and registers as golden texram::chip::TexramChip::pixel, each map sampled with the
-// trilinear arithmetic (plan_sample, tap_colour, blend_taps, combine) at base + the layout's
-// address, eq. 6-7 by specular_combine. The module adds the clocking: one clocked thread that,
+// walk and registers as golden texram::chip::TexramChip::pixel, each step's sample by golden's
+// texram::chip::sample_step (texram/chip/chip_step.hpp: footprint probes, detail maps, the
+// trilinear arithmetic at base + the layout's address) with this module as its memory reader,
+// eq. 6-7 by specular_combine. The module adds the clocking: one clocked thread that,
 // while idle, takes a DRF write, a CLUT write or a pixel's first parameter (in that order when
 // several come together); a pixel then takes its further parameters from the same port when a
 // DRF asks, makes each sample's accesses one after the other (held until the memory takes it,
@@ -21,6 +22,7 @@
 #include "blocks/texram_chip/texram_chip_ports.hpp"
 #include "formats/formats.hpp"
 #include "hls/common/sc_ports.hpp"
+#include "texram/chip/chip_step.hpp"
 #include "texram/chip/drf.hpp"
 #include "texram/chip/texram_chip.hpp"
 #include "texram/trilinear.hpp"
@@ -42,11 +44,7 @@ class TexramChipSc : public sc_core::sc_module {
  private:
   using Drf = texram::chip::Drf;
 
-  struct Param {
-    int lead = 0;
-    texram::Request request;
-    int face = 0;
-  };
+  using Param = texram::chip::PixelParameter;
 
   void run() {
     // Reset. Not ready: the edge that leaves reset is spent here.
@@ -107,12 +105,18 @@ class TexramChipSc : public sc_core::sc_module {
 
   Param read_param() {
     ++params_;
-    return {static_cast<int>(param_lead_i.read().to_uint()),
-            {static_cast<int32_t>(signed_value(param_u_i.read(), fmts::kTexCoord)),
-             static_cast<int32_t>(signed_value(param_v_i.read(), fmts::kTexCoord)),
-             static_cast<int32_t>(signed_value(param_lambda_i.read(), fmts::kLod)),
-             static_cast<uint32_t>(param_shade_i.read())},
-            static_cast<int>(param_face_i.read().to_uint())};
+    Param p;
+    p.lead = static_cast<int>(param_lead_i.read().to_uint());
+    p.request = {static_cast<int32_t>(signed_value(param_u_i.read(), fmts::kTexCoord)),
+                 static_cast<int32_t>(signed_value(param_v_i.read(), fmts::kTexCoord)),
+                 static_cast<int32_t>(signed_value(param_lambda_i.read(), fmts::kLod)),
+                 static_cast<uint32_t>(param_shade_i.read())};
+    p.r1u = static_cast<int32_t>(signed_value(param_r1u_i.read(), fmts::kTexDeriv));
+    p.r1v = static_cast<int32_t>(signed_value(param_r1v_i.read(), fmts::kTexDeriv));
+    p.r2u = static_cast<int32_t>(signed_value(param_r2u_i.read(), fmts::kTexDeriv));
+    p.r2v = static_cast<int32_t>(signed_value(param_r2v_i.read(), fmts::kTexDeriv));
+    p.face = static_cast<int>(param_face_i.read().to_uint());
+    return p;
   }
 
   // The pixel's next parameter, from the same port.
@@ -137,9 +141,10 @@ class TexramChipSc : public sc_core::sc_module {
     ++pixels_;
     texram::chip::PixelRegisters regs;
     regs.shade = p.request.shade;
+    const texram::chip::StepContext context{drfs_, clut_, reader_};
     int number = p.lead & 7;
     for (int step = 0; number != 0; ++step) {
-      if (step == texram::chip::kMaxSteps) {
+      if (step >= texram::chip::kMaxSteps) {
         step_limit_ = true;
         break;
       }
@@ -149,9 +154,12 @@ class TexramChipSc : public sc_core::sc_module {
         regs.take_parameter(d, p.request.shade);
       }
       ++steps_;
-      const uint32_t s = sample(d, p, regs.shade);
+      const uint32_t s = texram::chip::sample_step(context, number, p, regs.shade);
       if (regs.apply(d, s)) emit(s, false);
-      number = d.link;
+      int extra = 0;
+      number = texram::chip::next_drf(drfs_, d, &extra);
+      step += extra;
+      steps_ += static_cast<uint32_t>(extra);
     }
     emit(regs.result(), true);
   }
@@ -184,29 +192,19 @@ class TexramChipSc : public sc_core::sc_module {
     }
   }
 
-  // golden TexramChip::sample: the DRF's map at the parameter.
-  uint32_t sample(const Drf& d, const Param& p, uint32_t shade) {
-    const texram::Geometry g = texram::chip::drf_geometry(d);
-    const uint32_t base =
-        d.cube ? d.face_base[static_cast<size_t>(p.face % texram::chip::kCubeFaces)] : d.base;
-    const texram::SamplePlan plan = texram::plan_sample(g, d.sampler, p.request);
-    texram::AccessData data{};
-    bool reads = false;
-    for (const auto& a : plan.bank_address) reads = reads || a.has_value();
-    if (reads) {
-      for (int plane = 0; plane < plan.planes; ++plane) access(plan, base, plane, data);
+  // golden's sample_step reads the maps through this: each plane one clocked access.
+  struct Reader : texram::chip::ChipReader {
+    explicit Reader(TexramChipSc& chip) : chip_(chip) {}
+    void read(int, uint32_t base, const texram::SamplePlan& plan,
+              texram::AccessData& data) override {
+      for (int plane = 0; plane < plan.planes; ++plane) chip_.access(plan, base, plane, data);
     }
-    std::array<std::array<uint32_t, 4>, 2> colours{};
-    for (size_t j = 0; j < static_cast<size_t>(plan.levels_read); ++j) {
-      for (size_t k = 0; k < static_cast<size_t>(plan.taps_per_level); ++k) {
-        colours[j][k] = texram::tap_colour(plan.taps[j][k], data, d.sampler.kind, d.sampler, clut_);
-      }
-    }
-    return texram::combine(texram::blend_taps(plan, colours, d.sampler.widths), d.sampler, shade);
-  }
+    TexramChipSc& chip_;
+  };
 
   texram::chip::DrfFile drfs_{};
   texram::Clut32 clut_{};  // a RAM: no reset
+  Reader reader_{*this};
   bool out_full_ = false;
   uint32_t out_rgba_ = 0;
   bool out_last_ = false;

@@ -1,38 +1,41 @@
 /// The TEXRAM chip (000 §14; docs/texram_chip.md "The chip block"), bit-exact with the golden
 /// sequencer texram::chip::TexramChip (golden/texram/chip/texram_chip.cpp, the specification):
-/// seven linked description register files (tmu_texram_drf_file) over one shared memory, the
-/// trilinear unit (tmu_trilinear) as the datapath of every map, eq. 6-7 in
-/// tmu_specular_combine.
+/// seven linked description register files (tmu_texram_drf_file) over one shared memory, one
+/// step of a chain at a time in tmu_texram_step (the trilinear unit as the datapath of every
+/// map, footprint assembly and detail maps), eq. 6-7 in tmu_specular_combine.
 ///
 /// A pixel's first parameter names its leading DRF. For each DRF of its chain the sequencer
 /// takes the pixel's next parameter first where the DRF says takes_coords (not for the first
-/// DRF, whose parameter is the first), samples the DRF's map with the trilinear unit (its cfg_*
-/// from the DRF; every memory address the unit issues gets the map's base added: the base, or
-/// the cube face's base for DRF 7's cube map, the face taken modulo 6), and does the DRF's op
-/// with the sample:
+/// DRF, whose parameter is the first), samples the DRF's map (tmu_texram_step: the trilinear
+/// unit with the DRF's cfg_*, every memory address with the map's base added: the base, or the
+/// cube face's base for DRF 7's cube map, the face taken modulo 6; N probes averaged with the
+/// footprint flag; with the detail flag and lambda < 0 the offsets and detail maps of the two
+/// DRFs it links to), and does the DRF's op with the sample:
 ///   texture      C_d = the sample (eq. 5 inside the trilinear unit, with the pixel's I_d)
 ///   shading      I_d = the sample (and a later parameter's shade no longer replaces it)
 ///   reflectance  R = the sample
 ///   environment  E = the sample; R = the DRF's constant unless a reflectance map gave it
 ///   emit         the sample leaves on out at once, last = 0
-/// then follows the link (0 ends the chain). The colour leaves last = 1: C_d, or
-/// specular_combine(C_d, E, R) once an environment was sampled. After 7 accesses the pixel ends
-/// where it is and stat_step_limit_o is set (sticky).
+/// then follows the link (0 ends the chain; past a detail map's two DRFs, which count as two more
+/// steps). The colour leaves last = 1: C_d, or specular_combine(C_d, E, R) once an environment
+/// was sampled. After 7 steps the pixel ends where it is and stat_step_limit_o is set (sticky).
 ///
-/// One sample in flight at a time: the trilinear unit documents its configuration as
-/// quasi-static, so cfg_* (the current DRF's fields) change only while it is empty. States:
+/// One step at a time: the trilinear unit documents its configuration as quasi-static, so
+/// cfg_* (a DRF's fields) change only while it is empty (tmu_texram_step). States:
 ///   StIdle     drf and clut writes and a pixel's first parameter are taken
 ///   StCheck    the DRF number: 0 ends, the 8th step ends with the limit, a takes_coords DRF
 ///              (not the first) waits for a parameter, else the access
 ///   StParam    the pixel's next parameter
-///   StIssue    the request to the trilinear unit
+///   StIssue    the step's request to tmu_texram_step
 ///   StWait     its sample, applied by the op (an emit waits for the output register)
 ///   StFinish   the colour: into the output register, or into tmu_specular_combine
 ///   StCombine  tmu_specular_combine's result into the output register
 /// Cycles per step with page hits, the output free: Check 1, Issue 1 and the trilinear unit's
 /// 12 from acceptance to its output (taken in Wait): 14 for a one-plane map, 17 for four byte
-/// planes, 1 more per page fault. A pixel adds 3 (Idle, the last Check, Finish), 2 more when
-/// an environment sends its colour through the combine (tests/blocks/texram_chip_test.cpp).
+/// planes, 1 more per page fault; with footprint assembly 22 + N (tmu_texram_step); a detail
+/// sample 2 + 2 + 13 per read (3 or 4 reads). A pixel adds 3 (Idle, the last Check, Finish),
+/// 2 more when an environment sends its colour through the combine
+/// (tests/blocks/texram_chip_test.cpp).
 ///
 /// The DRF and CLUT write ports are ready only in StIdle: no pixel is between the parameter
 /// port and the output (the colour may still wait in the output register), so a write never
@@ -57,7 +60,7 @@ module tmu_texram_chip (
 
   /// A pixel's parameter: the first names the leading DRF (param_lead_i; read from the first
   /// only); (u, v) texels of level 0 or a sphere map's (uN, vN), lambda, the shade I_d, the
-  /// cube face.
+  /// cube face, and the derivatives r1 = d(u,v)/dx, r2 = d(u,v)/dy for footprint assembly.
   input  logic                       param_valid_i,
   output logic                       param_ready_o,
   input  tmu_pkg::drf_index_t        param_lead_i,
@@ -66,6 +69,10 @@ module tmu_texram_chip (
   input  tmu_pkg::lod_t              param_lambda_i,
   input  tmu_pkg::rgba8888_t         param_shade_i,
   input  tmu_pkg::cube_face_t        param_face_i,
+  input  tmu_pkg::tex_deriv_t        param_r1u_i,
+  input  tmu_pkg::tex_deriv_t        param_r1v_i,
+  input  tmu_pkg::tex_deriv_t        param_r2u_i,
+  input  tmu_pkg::tex_deriv_t        param_r2v_i,
 
   /// Memory access: the banks to read and their absolute addresses (base + the map's cell; 0
   /// where not read) ...
@@ -90,9 +97,8 @@ module tmu_texram_chip (
   output tmu_pkg::flag_t             stat_step_limit_o
 );
 
-  localparam int unsigned Banks    = tmu_pkg::Banks;
-  localparam int unsigned AddrW    = tmu_pkg::BankAddrW;
-  localparam int unsigned MaxSteps = tmu_pkg::Drfs;  // 7 accesses per pixel
+  localparam int unsigned MaxSteps = tmu_pkg::Drfs;  // 7 steps per pixel
+  localparam int unsigned LinkW    = tmu_pkg::DrfIndexW;
 
   // The ops (golden DrfOp); 5..7 do nothing.
   localparam logic [2:0] OpTexture     = 3'd0;
@@ -115,10 +121,11 @@ module tmu_texram_chip (
 
   state_e                 state_q, state_d;
   tmu_pkg::drf_index_t    num_q, num_d;    // the current DRF (0: the chain has ended)
-  logic [2:0]             step_q, step_d;  // accesses so far, 0..7
+  logic [3:0]             step_q, step_d;  // steps so far, 0..9 (a detail map's count 3)
   tmu_pkg::tex_coord_t    u_q, u_d, v_q, v_d;
   tmu_pkg::lod_t          lambda_q, lambda_d;
   tmu_pkg::cube_face_t    face_q, face_d;
+  tmu_pkg::tex_deriv_t    r1u_q, r1u_d, r1v_q, r1v_d, r2u_q, r2u_d, r2v_q, r2v_d;
   tmu_pkg::rgba8888_t     shade_q, shade_d;      // I_d
   tmu_pkg::rgba8888_t     colour_q, colour_d;    // C_d
   tmu_pkg::rgba8888_t     refl_q, refl_d;        // R
@@ -134,6 +141,9 @@ module tmu_texram_chip (
   // ---- The DRF file --------------------------------------------------------------------------
 
   logic drf_fire, clut_fire, param_fire;
+  // The map port, pointed by the step at the DRF whose map the trilinear unit reads.
+  tmu_pkg::drf_index_t     map_drf;
+  logic                    map_own_base;
   tmu_pkg::bank_addr_t     base;
   tmu_pkg::mip_log2_t      log2_w, log2_h;
   tmu_pkg::tex_kind_t      kind;
@@ -141,83 +151,129 @@ module tmu_texram_chip (
   tmu_pkg::tex_filter_t    filter;
   tmu_pkg::tex_border_t    border_u, border_v;
   tmu_pkg::tex_addressing_t addressing;
-  tmu_pkg::rgba8888_t      border_rgba, constant_rgba;
+  tmu_pkg::rgba8888_t      border_rgba, map_constant_rgba;
+  tmu_pkg::tex_combine_t   map_combine;
+  // The control port: the current DRF.
   tmu_pkg::drf_op_t        op;
   tmu_pkg::drf_index_t     link;
-  logic                    takes_coords;
+  logic                    takes_coords, footprint, detail;
+  tmu_pkg::probe_log2_t    log2_max_probes;
+  tmu_pkg::q_rule_t        q_rule;
+  tmu_pkg::tex_detail_combine_t detail_combine;
+  tmu_pkg::tex_border_t    ctl_border_u, ctl_border_v;
   tmu_pkg::tex_combine_t   combine;
+  tmu_pkg::rgba8888_t      constant_rgba;
+  logic [tmu_pkg::Drfs*LinkW-1:0] links;
 
   tmu_texram_drf_file u_drf_file (
     .clk_i, .rst_ni,
-    .wr_en_i            (drf_fire),
-    .wr_drf_i           (drf_drf_i),
-    .wr_field_i         (drf_field_i),
-    .wr_value_i         (drf_value_i),
-    .rd_drf_i           (num_q),
-    .rd_face_i          (face_q),
-    .rd_base_o          (base),
-    .rd_log2_w_o        (log2_w),
-    .rd_log2_h_o        (log2_h),
-    .rd_kind_o          (kind),
-    .rd_single_channel_o(single_channel),
-    .rd_filter_o        (filter),
-    .rd_border_u_o      (border_u),
-    .rd_border_v_o      (border_v),
-    .rd_addressing_o    (addressing),
-    .rd_border_rgba_o   (border_rgba),
-    .rd_constant_rgba_o (constant_rgba),
-    .rd_op_o            (op),
-    .rd_link_o          (link),
-    .rd_takes_coords_o  (takes_coords),
-    .rd_combine_o       (combine)
+    .wr_en_i              (drf_fire),
+    .wr_drf_i             (drf_drf_i),
+    .wr_field_i           (drf_field_i),
+    .wr_value_i           (drf_value_i),
+    .rd_drf_i             (map_drf),
+    .rd_face_i            (face_q),
+    .rd_own_base_i        (map_own_base),
+    .rd_base_o            (base),
+    .rd_log2_w_o          (log2_w),
+    .rd_log2_h_o          (log2_h),
+    .rd_kind_o            (kind),
+    .rd_single_channel_o  (single_channel),
+    .rd_filter_o          (filter),
+    .rd_border_u_o        (border_u),
+    .rd_border_v_o        (border_v),
+    .rd_addressing_o      (addressing),
+    .rd_border_rgba_o     (border_rgba),
+    .rd_constant_rgba_o   (map_constant_rgba),
+    .rd_combine_o         (map_combine),
+    .ctl_drf_i            (num_q),
+    .ctl_op_o             (op),
+    .ctl_link_o           (link),
+    .ctl_takes_coords_o   (takes_coords),
+    .ctl_footprint_o      (footprint),
+    .ctl_log2_max_probes_o(log2_max_probes),
+    .ctl_q_rule_o         (q_rule),
+    .ctl_detail_o         (detail),
+    .ctl_detail_combine_o (detail_combine),
+    .ctl_border_u_o       (ctl_border_u),
+    .ctl_border_v_o       (ctl_border_v),
+    .ctl_combine_o        (combine),
+    .ctl_constant_rgba_o  (constant_rgba),
+    .links_o              (links)
   );
 
-  // ---- The datapath: the trilinear unit on the current DRF -----------------------------------
+  // DRF n's link; 0 for n = 0 (no DRF).
+  function automatic tmu_pkg::drf_index_t link_of(tmu_pkg::drf_index_t n);
+    link_of = n == '0 ? '0 : links[(32'(n) - 1)*LinkW +: LinkW];
+  endfunction
 
-  logic                     tri_req_valid, tri_req_ready, tri_clut_ready;
-  logic                     tri_out_valid, tri_out_ready;
-  tmu_pkg::rgba8888_t       tri_out_rgba;
-  logic [Banks*AddrW-1:0]   tri_addr;
+  // A detail map's offsets DRF (the link) and detail DRF (its link), and where the chain goes
+  // on: past both when they exist (golden next_drf).
+  tmu_pkg::drf_index_t offsets_drf, detail_drf, next_drf;
+  logic                skip_detail;
+  assign offsets_drf = link;
+  assign detail_drf  = link_of(link);
+  assign skip_detail = detail && offsets_drf != '0 && detail_drf != '0;
+  assign next_drf    = skip_detail ? link_of(detail_drf) : link;
 
-  tmu_trilinear u_trilinear (
+  // ---- The step: the current DRF's sample -----------------------------------------------------
+
+  logic               step_req_valid, step_req_ready, step_out_valid, step_out_ready;
+  logic               step_clut_ready;
+  tmu_pkg::rgba8888_t step_rgba;
+
+  tmu_texram_step u_step (
     .clk_i, .rst_ni,
-    .cfg_log2_w_i        (log2_w),
-    .cfg_log2_h_i        (log2_h),
-    .cfg_kind_i          (kind),
-    .cfg_single_channel_i(single_channel),
-    .cfg_filter_i        (filter),
-    .cfg_border_u_i      (border_u),
-    .cfg_border_v_i      (border_v),
-    .cfg_border_rgba_i   (border_rgba),
-    .cfg_combine_i       (combine),
-    .cfg_constant_rgba_i (constant_rgba),
-    .cfg_addressing_i    (addressing),
-    .clut_valid_i        (clut_valid_i && state_q == StIdle),
-    .clut_ready_o        (tri_clut_ready),
+    .t_i                  (num_q),
+    .o_i                  (offsets_drf),
+    .d_i                  (detail_drf),
+    .footprint_i          (footprint),
+    .log2_max_probes_i    (log2_max_probes),
+    .q_rule_i             (q_rule),
+    .detail_i             (detail),
+    .detail_combine_i     (detail_combine),
+    .border_u_i           (ctl_border_u),
+    .border_v_i           (ctl_border_v),
+    .combine_i            (combine),
+    .constant_rgba_i      (constant_rgba),
+    .map_drf_o            (map_drf),
+    .map_own_base_o       (map_own_base),
+    .map_base_i           (base),
+    .map_log2_w_i         (log2_w),
+    .map_log2_h_i         (log2_h),
+    .map_kind_i           (kind),
+    .map_single_channel_i (single_channel),
+    .map_filter_i         (filter),
+    .map_border_u_i       (border_u),
+    .map_border_v_i       (border_v),
+    .map_addressing_i     (addressing),
+    .map_border_rgba_i    (border_rgba),
+    .map_constant_rgba_i  (map_constant_rgba),
+    .map_combine_i        (map_combine),
+    .clut_valid_i         (clut_valid_i && state_q == StIdle),
+    .clut_ready_o         (step_clut_ready),
     .clut_addr_i,
     .clut_rgba_i,
-    .req_valid_i         (tri_req_valid),
-    .req_ready_o         (tri_req_ready),
-    .req_u_i             (u_q),
-    .req_v_i             (v_q),
-    .req_lambda_i        (lambda_q),
-    .req_shade_i         (shade_q),
+    .req_valid_i          (step_req_valid),
+    .req_ready_o          (step_req_ready),
+    .req_u_i              (u_q),
+    .req_v_i              (v_q),
+    .req_lambda_i         (lambda_q),
+    .req_shade_i          (shade_q),
+    .req_r1u_i            (r1u_q),
+    .req_r1v_i            (r1v_q),
+    .req_r2u_i            (r2u_q),
+    .req_r2v_i            (r2v_q),
     .mem_req_valid_o,
     .mem_req_ready_i,
     .mem_req_en_o,
-    .mem_req_addr_o      (tri_addr),
+    .mem_req_addr_o,
     .mem_resp_valid_i,
     .mem_resp_data_i,
-    .out_valid_o         (tri_out_valid),
-    .out_ready_i         (tri_out_ready),
-    .out_rgba_o          (tri_out_rgba)
+    .out_valid_o          (step_out_valid),
+    .out_ready_i          (step_out_ready),
+    .out_rgba_o           (step_rgba)
   );
-
-  // The map's base on every bank it reads (the cube face's for a cube map); 0 where not read.
-  for (genvar b = 0; b < Banks; b++) begin : gen_addr
-    assign mem_req_addr_o[b*AddrW +: AddrW] =
-        mem_req_en_o[b] ? tri_addr[b*AddrW +: AddrW] + base : '0;
-  end
 
   // ---- eq. 6-7: C = min(255, C_d + R E / 255) --------------------------------------------------
 
@@ -242,14 +298,14 @@ module tmu_texram_chip (
   assign out_free = !out_valid_q || out_ready_i;
 
   assign drf_ready_o   = state_q == StIdle;
-  assign clut_ready_o  = state_q == StIdle && tri_clut_ready;
+  assign clut_ready_o  = state_q == StIdle && step_clut_ready;
   assign param_ready_o = state_q == StIdle || state_q == StParam;
   assign drf_fire      = drf_valid_i && drf_ready_o;
   assign clut_fire     = clut_valid_i && clut_ready_o;
   assign param_fire    = param_valid_i && param_ready_o;
 
-  assign tri_req_valid  = state_q == StIssue;
-  assign tri_out_ready  = state_q == StWait && (op != OpEmit || out_free);
+  assign step_req_valid = state_q == StIssue;
+  assign step_out_ready = state_q == StWait && (op != OpEmit || out_free);
   assign spec_in_valid  = state_q == StFinish && have_env_q;
   assign spec_out_ready = state_q == StCombine && out_free;
 
@@ -263,6 +319,10 @@ module tmu_texram_chip (
     v_d         = v_q;
     lambda_d    = lambda_q;
     face_d      = face_q;
+    r1u_d       = r1u_q;
+    r1v_d       = r1v_q;
+    r2u_d       = r2u_q;
+    r2v_d       = r2v_q;
     shade_d     = shade_q;
     colour_d    = colour_q;
     refl_d      = refl_q;
@@ -283,6 +343,10 @@ module tmu_texram_chip (
       v_d      = param_v_i;
       lambda_d = param_lambda_i;
       face_d   = param_face_i;
+      r1u_d    = param_r1u_i;
+      r1v_d    = param_r1v_i;
+      r2u_d    = param_r2u_i;
+      r2v_d    = param_r2v_i;
       params_d = params_q + 1'b1;
     end
 
@@ -305,7 +369,7 @@ module tmu_texram_chip (
       StCheck: begin
         if (num_q == '0) begin
           state_d = StFinish;
-        end else if (32'(step_q) == MaxSteps) begin
+        end else if (32'(step_q) >= MaxSteps) begin
           limit_d = 1'b1;
           state_d = StFinish;
         end else if (step_q != '0 && takes_coords) begin
@@ -321,37 +385,39 @@ module tmu_texram_chip (
         end
       end
       StIssue: begin
-        if (tri_req_ready) begin
+        if (step_req_ready) begin
           steps_d = steps_q + 1'b1;
           state_d = StWait;
         end
       end
       StWait: begin
-        if (tri_out_valid && tri_out_ready) begin
+        if (step_out_valid && step_out_ready) begin
           unique case (op)
-            OpTexture: colour_d = tri_out_rgba;
+            OpTexture: colour_d = step_rgba;
             OpShading: begin
-              shade_d  = tri_out_rgba;
+              shade_d  = step_rgba;
               shaded_d = 1'b1;
             end
             OpReflectance: begin
-              refl_d      = tri_out_rgba;
+              refl_d      = step_rgba;
               have_refl_d = 1'b1;
             end
             OpEnvironment: begin
-              env_d      = tri_out_rgba;
+              env_d      = step_rgba;
               have_env_d = 1'b1;
               if (!have_refl_q) refl_d = constant_rgba;
             end
             OpEmit: begin
               out_valid_d = 1'b1;
-              out_rgba_d  = tri_out_rgba;
+              out_rgba_d  = step_rgba;
               out_last_d  = 1'b0;
             end
             default: ;  // ops 5..7 do nothing
           endcase
-          num_d   = link;
-          step_d  = step_q + 1'b1;
+          // Past a detail map's offsets and detail DRFs: two more steps (golden next_drf).
+          num_d   = next_drf;
+          step_d  = step_q + (skip_detail ? 4'd3 : 4'd1);
+          if (skip_detail) steps_d = steps_q + tmu_pkg::StatCountW'(2);
           state_d = StCheck;
         end
       end
@@ -411,6 +477,10 @@ module tmu_texram_chip (
   always_ff @(posedge clk_i) begin
     u_q        <= u_d;
     v_q        <= v_d;
+    r1u_q      <= r1u_d;
+    r1v_q      <= r1v_d;
+    r2u_q      <= r2u_d;
+    r2v_q      <= r2v_d;
     lambda_q   <= lambda_d;
     shade_q    <= shade_d;
     colour_q   <= colour_d;
@@ -433,11 +503,6 @@ module tmu_texram_chip (
   assign unused_clut_fire = clut_fire;
 
 `ifndef SYNTHESIS
-  // The trilinear unit's configuration changes only while it is empty: at most one sample in it.
-  property p_one_in_flight;
-    @(posedge clk_i) disable iff (!rst_ni) tri_req_valid && tri_req_ready |=> state_q == StWait;
-  endproperty
-  a_one_in_flight: assert property (p_one_in_flight);
   // A write is taken only between pixels.
   property p_write_idle;
     @(posedge clk_i) disable iff (!rst_ni) (drf_fire || clut_fire) |-> state_q == StIdle;

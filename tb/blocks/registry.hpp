@@ -57,6 +57,9 @@ struct BlockOptions {
   // fractal, material: the fractal sums on one noise unit shared by the four octaves (one
   // sample per 4 clocks, the thesis's design) instead of four pipelined units (one per clock).
   bool fractal_shared = false;
+  // texram_chip: the random items are scan lines of one named program ("texture", "detail",
+  // "extreme": docs/texram_chip.md's cycle figures) instead of random programs; "" random.
+  std::string chip_workload;
   // volume: the mode of every volume drawn (0 value, 1 raw; unset: drawn), and a figure's ray
   // set (z, x or oblique through a 64 x 128 x 128 volume, docs/volume.md; empty: the directed
   // and random rays).

@@ -19,7 +19,7 @@ std::string why_not_on_chip(const host::Material& mat, const MaterialTexture& te
     return "orders texture and composed sample at the vertices (the material's texture unit)";
   }
   if (mat.footprint) {
-    return "footprint assembly: the chip block's parameter port has no r1, r2 yet "
+    return "footprint assembly: the renderer does not send r1, r2 to the chip yet "
            "(docs/texram_chip.md)";
   }
   if (mat.mipmaps == host::Material::Mipmaps::kMipgen || tex.mipgen_pending) {

@@ -120,6 +120,12 @@ std::shared_ptr<CosimArgs> add_cosim_options(CLI::App& app) {
                   "one noise unit for the four octaves, one sample per 4 clocks (shared)")
       ->check(CLI::IsMember({"pipelined", "shared"}))
       ->capture_default_str();
+  cmd->add_option("--chip-workload", args->block_options.chip_workload,
+                  "texram_chip: random items from scan lines of one program instead of random "
+                  "programs: texture (a one-plane map), detail (the map with a detail map), "
+                  "extreme (texture and reflectance maps each with a detail map, then a cube "
+                  "environment map)")
+      ->check(CLI::IsMember({"texture", "detail", "extreme"}));
   cmd->add_flag(
       "--no-lookahead", [args](int64_t) { args->block_options.lookahead = false; },
       "ccc_cache_bilinear: the neighbour prefetch off (default: on, drawn for later batches)");

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "texram/chip/chip_memory.hpp"
+#include "texram/chip/chip_step.hpp"
 #include "texram/chip/drf.hpp"
 #include "texram/page_model.hpp"
 #include "texram/sampler_config.hpp"
@@ -69,7 +70,7 @@ struct ChipStats {
   bool step_limit = false;                         // sticky: a pixel ran into kMaxSteps
 };
 
-class TexramChip {
+class TexramChip : private ChipReader {
  public:
   // `memory` holds the maps (place() them first), `clut` the chip's palette.
   TexramChip(const ChipMemory& memory, const Clut32& clut) : memory_(memory), clut_(clut) {}
@@ -90,17 +91,8 @@ class TexramChip {
   const std::vector<ChipAccess>& accesses() const { return accesses_; }
 
  private:
-  // The DRF's map sampled at `request`: the datapath's colour before the pixel's combines.
-  uint32_t sample(int number, const Drf& d, const PixelParameter& p, const Request& request);
-  // One read of DRF `number`'s map at `base` (its plan through plan_out): the trilinear
-  // datapath's colour with the DRF's eq. 5.
-  uint32_t read(int number, const Drf& d, uint32_t base, const Request& request,
-                SamplePlan* plan_out);
-  // With a detail map (d.detail, lambda < 0): texram/detail.hpp's sample, the offsets and the
-  // detail map read through the DRFs the texture links to.
-  uint32_t with_detail(int number, const Drf& d, const PixelParameter& p, const Request& request);
-  // With footprint assembly: the probes' samples averaged (footprint::sample's steps).
-  uint32_t assemble(int number, const Drf& d, const PixelParameter& p, uint32_t shade);
+  // ChipReader: the cells from the memory, each plane one access through the page model.
+  void read(int drf, uint32_t base, const SamplePlan& plan, AccessData& data) override;
 
   const ChipMemory& memory_;
   const Clut32& clut_;

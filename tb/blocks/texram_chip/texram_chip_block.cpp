@@ -7,11 +7,13 @@
 
 #include "blocks/trilinear/texram_memory.hpp"
 #include "blocks/trilinear/texram_textures.hpp"
+#include "footprint/footprint.hpp"
 #include "formats/formats.hpp"
 #include "harness/described_engines.hpp"
 #include "harness/described_hls.hpp"
 #include "hls/texram/texram_chip_sc.hpp"
 #include "rtl_models_texram_chip.hpp"
+#include "texram/detail.hpp"
 #include "texram/page_model.hpp"
 
 TMU_DESCRIBE_SC(texram_chip)
@@ -63,8 +65,9 @@ int32_t clamp_lod(int64_t raw) {
   return static_cast<int32_t>(std::clamp<int64_t>(raw, kLodMin, kLodMax));
 }
 
-// The DRFs a pixel led by `lead` visits, as pixel() walks them (the step limit included), and
-// which of them take a parameter (the first always).
+// The DRFs a pixel led by `lead` visits, as pixel() walks them (past a detail map's offsets
+// and detail DRFs, the step limit included), and which of them take a parameter (the first
+// always).
 struct Walk {
   std::vector<int> drfs;
   std::vector<bool> takes;
@@ -74,14 +77,16 @@ Walk walk(const DrfFile& file, int lead) {
   Walk w;
   int number = lead & 7;
   for (int step = 0; number != 0; ++step) {
-    if (step == kMaxSteps) {
+    if (step >= kMaxSteps) {
       w.limited = true;
       break;
     }
     const Drf& d = file[static_cast<size_t>(number - 1)];
     w.drfs.push_back(number);
     w.takes.push_back(step == 0 || d.takes_coords);
-    number = d.link;
+    int extra = 0;
+    number = texram::chip::next_drf(file, d, &extra);
+    step += extra;
   }
   return w;
 }
@@ -182,13 +187,20 @@ ChipScene draw_chip_scene(uint64_t seed) {
     m.base = place_base(rng, m.texture->geometry.bank_cells(), used);
   };
   // A few maps of random kinds and sizes; the first true colour, the second an index map (the
-  // chip's CLUT is its palette).
+  // chip's CLUT is its palette), the third luminance: the second and the third 64..256 texels
+  // a side, the one-plane maps of the workloads (a span of pixels crosses pages as on a real
+  // texture).
   const auto maps = static_cast<size_t>(uniform(rng, 4, 6));
   for (size_t i = 0; i < maps; ++i) {
     ChipMapPlacement m;
     m.setup = draw_texram_setup(rng, defaults);
     if (i == 0) m.setup.config.kind = texram::TexelKind::kTrueColour;
     if (i == 1) m.setup.config.kind = texram::TexelKind::kIndex;
+    if (i == 2) m.setup.config.kind = texram::TexelKind::kLuminance;
+    if (i == 1 || i == 2) {
+      m.setup.log2_w = static_cast<int>(uniform(rng, 6, 8));
+      m.setup.log2_h = static_cast<int>(uniform(rng, 6, 8));
+    }
     place(m);
     s.maps.push_back(m);
   }
@@ -200,11 +212,55 @@ ChipScene draw_chip_scene(uint64_t seed) {
     f.setup.content = static_cast<uint32_t>(rng());
     place(f);
   }
+  // Detail mipmaps (000 §9): 16..256 texels a side, the first grey (luminance: one map for
+  // modulating any texture), the second of a random kind.
+  for (int i = 0; i < 2; ++i) {
+    ChipMapPlacement m;
+    m.setup = draw_texram_setup(rng, defaults);
+    if (i == 0) m.setup.config.kind = texram::TexelKind::kLuminance;
+    m.setup.log2_w = static_cast<int>(uniform(rng, 4, fmts::kMaxDetailLog2));
+    m.setup.log2_h = static_cast<int>(uniform(rng, 4, fmts::kMaxDetailLog2));
+    place(m);
+    s.details.push_back(m);
+  }
+  // Offset map pairs at the first plain maps' sizes: offsets anywhere in 0..255, multiples of 16
+  // (regions side by side), or 240..255 (regions that wrap at the detail map's side); the v map
+  // right after the u map, page aligned (offsets_v_base).
+  std::vector<ChipMapPlacement> offset_maps;
+  for (size_t i = 0; i < std::min<size_t>(3, s.maps.size()); ++i) {
+    ChipOffsetsPlacement o;
+    o.map = i;
+    o.log2_w = s.maps[i].setup.log2_w;
+    o.log2_h = s.maps[i].setup.log2_h;
+    texram::Level8 u(1u << o.log2_w, 1u << o.log2_h), v(u.width, u.height);
+    const uint64_t mode = rng() % 3;
+    for (texram::Level8* level : {&u, &v}) {
+      for (uint8_t& t : level->texels) {
+        const auto x = static_cast<uint8_t>(rng());
+        t = mode == 0 ? x : mode == 1 ? static_cast<uint8_t>(x & 0xF0) : (x | 0xF0);
+      }
+    }
+    const texram::DetailMap dm = texram::make_detail_map(*s.details[0].texture, u, v);
+    const uint32_t u_cells = texram::page_up(dm.offset_u.geometry.bank_cells());
+    o.base = place_base(rng, u_cells + dm.offset_v.geometry.bank_cells(), used);
+    ChipMapPlacement pu, pv;
+    pu.texture = std::make_shared<const texram::TexramTexture>(dm.offset_u);
+    pu.base = o.base;
+    pv.texture = std::make_shared<const texram::TexramTexture>(dm.offset_v);
+    pv.base = o.base + u_cells;
+    offset_maps.push_back(pu);
+    offset_maps.push_back(pv);
+    s.offsets.push_back(o);
+  }
   std::vector<ChipMapPlacement> all = s.maps;
   all.insert(all.end(), s.faces.begin(), s.faces.end());
+  all.insert(all.end(), s.details.begin(), s.details.end());
+  all.insert(all.end(), offset_maps.begin(), offset_maps.end());
   ChipScene placed = chip_scene_of(all, s.maps[1].texture->clut);
   placed.maps = s.maps;
   placed.faces = s.faces;
+  placed.offsets = s.offsets;
+  placed.details = s.details;
   return placed;
 }
 
@@ -245,6 +301,10 @@ Drf draw_drf(std::mt19937_64& rng, const ChipMapPlacement& m) {
          : r < 9  ? DrfOp::kEnvironment
                   : DrfOp::kEmit;
   d.takes_coords = rng() % 2 == 0;
+  // Footprint assembly now and then, every probe limit (5..7 act as 4) and both q rules.
+  d.footprint = rng() % 6 == 0;
+  d.log2_max_probes = static_cast<int>(rng() % 8);
+  d.q_rule = static_cast<footprint::QRule>(rng() % 2);
   return d;
 }
 
@@ -256,8 +316,45 @@ Drf cube_drf(std::mt19937_64& rng, const ChipScene& scene) {
   return d;
 }
 
+// A derivative component of up to 2^(eighths / 8) texels, either sign (raw SQ16.8,
+// saturated). Integers only: the same stimulus on every standard library.
+int32_t deriv(std::mt19937_64& rng, int eighths) {
+  constexpr std::array<int64_t, 8> kRoot = {256, 279, 304, 332, 362, 395, 431, 470};  // 2^(i/8)
+  const int64_t whole = eighths >> 3;                                                 // floor
+  const int64_t len = whole >= 0 ? kRoot[static_cast<size_t>(eighths & 7)] << whole
+                                 : kRoot[static_cast<size_t>(eighths & 7)] >> -whole;
+  const int64_t raw = len * static_cast<int64_t>(rng() % 1025) / 1024;
+  constexpr int64_t kMax = (int64_t{1} << (fmts::kTexDeriv.width() - 1)) - 1;
+  return static_cast<int32_t>(std::clamp<int64_t>(rng() % 2 ? raw : -raw, -kMax, kMax));
+}
+
+// r1 and r2 of a parameter: mostly an anisotropic footprint (r2 about r1 turned a quarter and
+// shortened by up to 2^6, lengths from 1/32 texel, where the marcher's lambda is below -4, to
+// 64 texels), now and then a point (both 0), a line (r2 0 or parallel to r1), or long vectors.
+void draw_derivatives(std::mt19937_64& rng, PixelParameter& p) {
+  const uint64_t r = rng() % 16;
+  const auto eighths = static_cast<int>(uniform(rng, -5 * 8, 6 * 8));
+  p.r1u = deriv(rng, eighths);
+  p.r1v = deriv(rng, eighths);
+  const int shrink = static_cast<int>(rng() % 7);
+  p.r2u = -p.r1v / (1 << shrink) + deriv(rng, eighths - 32);
+  p.r2v = p.r1u / (1 << shrink) + deriv(rng, eighths - 32);
+  if (r == 0) p.r1u = p.r1v = p.r2u = p.r2v = 0;
+  if (r == 1) p.r2u = p.r2v = 0;
+  if (r == 2) {
+    p.r2u = p.r1u / 2;
+    p.r2v = p.r1v / 2;
+  }
+  if (r == 3) {
+    p.r1u = deriv(rng, 14 * 8);
+    p.r2v = deriv(rng, 14 * 8);
+  }
+}
+
 // The coordinates of a parameter taken for DRF `d`: over its map and around it (a sphere
-// map's (uN, vN) mostly on the disc's square), now and then anywhere in the formats.
+// map's (uN, vN) mostly on the disc's square), now and then anywhere in the formats; a DRF
+// with a detail map gets the lambdas where detail's rules change (0, -1, -4, below -4, between
+// -1 and 0) often.
 PixelParameter draw_parameter(std::mt19937_64& rng, const Drf& d, int lead) {
   PixelParameter p;
   p.lead = lead;
@@ -279,12 +376,59 @@ PixelParameter draw_parameter(std::mt19937_64& rng, const Drf& d, int lead) {
   p.request.lambda = l == 0   ? kLodMin
                      : l == 1 ? kLodMax
                               : clamp_lod(uniform(rng, -2 * kOne, top + 2 * kOne));
+  if (d.detail && rng() % 2 == 0) {
+    constexpr std::array<int32_t, 10> kDetailLambdas = {
+        0,       -kOne,     -4 * kOne, -4 * kOne - 1, -5 * kOne,
+        kLodMin, -kOne / 2, -1,        -kOne + 1,     -kOne - 1};
+    p.request.lambda = rng() % 2 ? kDetailLambdas[rng() % kDetailLambdas.size()]
+                                 : clamp_lod(uniform(rng, -6 * kOne, kOne));
+  }
   p.request.shade = static_cast<uint32_t>(rng());
   p.face = rng() % 16 == 0 ? static_cast<int>(uniform(rng, 6, 7)) : static_cast<int>(rng() % 6);
+  draw_derivatives(rng, p);
   return p;
 }
 
 }  // namespace
+
+ChipDetailDrfs chip_detail_drfs(std::mt19937_64& rng, const ChipScene& scene, size_t offsets,
+                                size_t detail) {
+  const ChipOffsetsPlacement& op = scene.offsets[offsets];
+  const ChipMapPlacement& dm = scene.details[detail];
+  ChipDetailDrfs c;
+  c.t = draw_drf(rng, scene.maps[op.map]);
+  c.t.op = rng() % 3 == 0 ? DrfOp::kReflectance : DrfOp::kTexture;
+  if (rng() % 16 != 0) c.t.sampler.addressing = texram::Addressing::kTexel;
+  c.t.detail = true;
+  c.t.detail_combine = static_cast<texram::DetailCombine>(rng() % 2);
+  // The offsets DRF as texram::offset_sampler sets it (luminance, nearest, the texture's border
+  // modes), now and then another filter; the detail DRF as detail_sampler (trilinear, wrap),
+  // now and then another filter, border or combine: the chip reads each map as its DRF says.
+  c.o.op = DrfOp::kOffsets;
+  c.o.base = op.base;
+  c.o.log2_w = op.log2_w;
+  c.o.log2_h = op.log2_h;
+  c.o.sampler = texram::offset_sampler(c.t.sampler);
+  if (rng() % 8 == 0) c.o.sampler.filter = static_cast<texram::Filter>(rng() % 3);
+  c.o.takes_coords = rng() % 2 == 0;  // ignored: the offsets DRF is read within t's step
+  c.d.op = DrfOp::kDetail;
+  c.d.base = dm.base;
+  c.d.log2_w = dm.setup.log2_w;
+  c.d.log2_h = dm.setup.log2_h;
+  c.d.sampler = dm.setup.config;
+  c.d.sampler.single_channel = c.t.sampler.single_channel;
+  c.d.sampler.filter = texram::Filter::kTrilinear;
+  c.d.sampler.border_u = c.d.sampler.border_v = texram::Border::kWrap;
+  c.d.sampler.combine = texram::Combine::kOne;
+  c.d.sampler.addressing = texram::Addressing::kTexel;
+  if (rng() % 8 == 0) {
+    c.d.sampler.filter = static_cast<texram::Filter>(rng() % 3);
+    c.d.sampler.border_u = static_cast<texram::Border>(rng() % 4);
+    c.d.sampler.combine = static_cast<texram::Combine>(rng() % 3);
+  }
+  c.d.takes_coords = rng() % 2 == 0;
+  return c;
+}
 
 ChipProgram draw_chip_program(std::mt19937_64& rng, const ChipScene& scene) {
   ChipProgram p;
@@ -292,15 +436,35 @@ ChipProgram draw_chip_program(std::mt19937_64& rng, const ChipScene& scene) {
   for (int i = 0; i < kDrfs; ++i) order[static_cast<size_t>(i)] = i + 1;
   for (size_t i = order.size() - 1; i > 0; --i) std::swap(order[i], order[rng() % (i + 1)]);
   const bool cube = rng() % 3 != 0;
+  const auto at = [&](int n) -> Drf& { return p.file[static_cast<size_t>(n - 1)]; };
   for (size_t i = 0; i < order.size();) {
     const size_t len = static_cast<size_t>(uniform(rng, 1, static_cast<int64_t>(order.size() - i)));
-    for (size_t k = 0; k < len; ++k) {
+    for (size_t k = 0; k < len;) {
       const int n = order[i + k];
+      const int next = k + 1 < len ? order[i + k + 1] : 0;
+      // A texture or reflectance DRF with a detail map takes three DRFs of the chain (not the
+      // cube map's): the pixel leads with it, never with its offsets or detail DRF.
+      if (k + 3 <= len && rng() % 3 == 0 &&
+          !(cube && (n == kCubeDrf || next == kCubeDrf || order[i + k + 2] == kCubeDrf))) {
+        ChipDetailDrfs c = chip_detail_drfs(rng, scene, rng() % scene.offsets.size(),
+                                            rng() % scene.details.size());
+        const int o = next, d = order[i + k + 2];
+        c.t.link = o;
+        c.o.link = d;
+        c.d.link = k + 3 < len ? order[i + k + 3] : 0;
+        at(n) = c.t;
+        at(o) = c.o;
+        at(d) = c.d;
+        p.leads.push_back(n);
+        k += 3;
+        continue;
+      }
       Drf d = cube && n == kCubeDrf ? cube_drf(rng, scene)
                                     : draw_drf(rng, scene.maps[rng() % scene.maps.size()]);
-      d.link = k + 1 < len ? order[i + k + 1] : 0;
-      p.file[static_cast<size_t>(n - 1)] = d;
+      d.link = next;
+      at(n) = d;
       p.leads.push_back(n);
+      ++k;
     }
     i += len;
   }
@@ -318,12 +482,16 @@ Txn chip_clut_item(uint8_t index, uint32_t rgba) {
 }
 
 Txn chip_param_item(const PixelParameter& p) {
-  return channel_item(D::table(), "param",
-                      {static_cast<uint64_t>(p.lead) & 7,
-                       static_cast<uint32_t>(p.request.u) & low_bits(fmts::kTexCoord),
-                       static_cast<uint32_t>(p.request.v) & low_bits(fmts::kTexCoord),
-                       static_cast<uint32_t>(p.request.lambda) & low_bits(fmts::kLod),
-                       p.request.shade, static_cast<uint64_t>(p.face) & 7});
+  return channel_item(
+      D::table(), "param",
+      {static_cast<uint64_t>(p.lead) & 7,
+       static_cast<uint32_t>(p.request.u) & low_bits(fmts::kTexCoord),
+       static_cast<uint32_t>(p.request.v) & low_bits(fmts::kTexCoord),
+       static_cast<uint32_t>(p.request.lambda) & low_bits(fmts::kLod), p.request.shade,
+       static_cast<uint64_t>(p.face) & 7, static_cast<uint32_t>(p.r1u) & low_bits(fmts::kTexDeriv),
+       static_cast<uint32_t>(p.r1v) & low_bits(fmts::kTexDeriv),
+       static_cast<uint32_t>(p.r2u) & low_bits(fmts::kTexDeriv),
+       static_cast<uint32_t>(p.r2v) & low_bits(fmts::kTexDeriv)});
 }
 
 std::vector<Txn> chip_program_items(const DrfFile& file) {
@@ -343,6 +511,10 @@ PixelParameter chip_parameter(const Txn& t) {
       sign_extend(t.f[D::param_u], fmts::kTexCoord), sign_extend(t.f[D::param_v], fmts::kTexCoord),
       sign_extend(t.f[D::param_lambda], fmts::kLod), static_cast<uint32_t>(t.f[D::param_shade])};
   p.face = static_cast<int>(t.f[D::param_face] & 7);
+  p.r1u = sign_extend(t.f[D::param_r1u], fmts::kTexDeriv);
+  p.r1v = sign_extend(t.f[D::param_r1v], fmts::kTexDeriv);
+  p.r2u = sign_extend(t.f[D::param_r2u], fmts::kTexDeriv);
+  p.r2v = sign_extend(t.f[D::param_r2v], fmts::kTexDeriv);
   return p;
 }
 
@@ -354,6 +526,12 @@ TexramChipBlock::TexramChipBlock(const BlockOptions& options)
   std::mt19937_64 rng(options.seed ^ 0xC41F'0000'0000'0002ull);
   first_ = draw_chip_program(rng, *scene_);
   drawn_ = true;
+  workload_ = options.chip_workload;
+  if (!workload_.empty() && workload_ != "texture" && workload_ != "detail" &&
+      workload_ != "extreme") {
+    throw std::invalid_argument("texram_chip: no workload '" + workload_ +
+                                "' (texture, detail, extreme)");
+  }
 }
 
 TexramChipBlock::TexramChipBlock(const BlockOptions& /*nothing is drawn*/,
@@ -362,6 +540,97 @@ TexramChipBlock::TexramChipBlock(const BlockOptions& /*nothing is drawn*/,
     : DescribedBlockOf(D::table()), scene_(std::move(scene)), first_{program, {}}, drawn_(false) {
   add_level("hls", hls_level<desc::texram_chip_sc, hls::TexramChipSc>());
   TMU_ADD_RTL_LEVELS(texram_chip, variant());
+}
+
+std::string TexramChipBlock::repro_options() const {
+  const std::string variant = DescribedBlock::repro_options();
+  if (workload_.empty()) return variant;
+  return (variant.empty() ? "" : variant + " ") + "--chip-workload " + workload_;
+}
+
+std::vector<Txn> TexramChipBlock::workload_items(size_t count) const {
+  const ChipScene& s = *scene_;
+  std::mt19937_64 rng(0xC41F'F16E);
+  // A texture DRF as a renderer would set it: trilinear, wrap, the shade applied.
+  const auto plain = [](Drf d) {
+    d.sampler.filter = texram::Filter::kTrilinear;
+    d.sampler.border_u = d.sampler.border_v = texram::Border::kWrap;
+    d.sampler.addressing = texram::Addressing::kTexel;
+    d.sampler.combine = texram::Combine::kShade;
+    d.takes_coords = d.footprint = false;
+    return d;
+  };
+  // A map with the grey detail map, modulated (the texture read too: 000 §9's four accesses).
+  const auto with_detail = [&](size_t offsets, DrfOp op) {
+    ChipDetailDrfs c = chip_detail_drfs(rng, s, offsets, 0);
+    c.t = plain(c.t);
+    c.t.op = op;
+    c.t.detail_combine = texram::DetailCombine::kModulate;
+    c.o.sampler = texram::offset_sampler(c.t.sampler);
+    c.d.sampler.filter = texram::Filter::kTrilinear;
+    c.d.sampler.border_u = c.d.sampler.border_v = texram::Border::kWrap;
+    c.d.sampler.combine = texram::Combine::kOne;
+    return c;
+  };
+  // One-plane maps, the larger first: the index map (1) and the luminance map (2), each with
+  // its offset maps.
+  const auto texels = [&](size_t m) { return s.maps[m].setup.log2_w + s.maps[m].setup.log2_h; };
+  const size_t first = texels(1) >= texels(2) ? 1 : 2, second = 3 - first;
+  ChipProgram program;
+  int32_t lambda = 0, step = kOne;  // texture: a texel a pixel at level 0
+  if (workload_ == "texture") {
+    program.file[0] = plain(draw_drf(rng, s.maps[first]));
+    program.file[0].op = DrfOp::kTexture;
+  } else {
+    // Magnified four times: lambda -2 (the detail map's level 2, the patent's level -2).
+    lambda = -2 * kOne;
+    step = kOne / 4;
+    const ChipDetailDrfs a = with_detail(first, DrfOp::kTexture);
+    program.file[0] = a.t;
+    program.file[0].link = 2;
+    program.file[1] = a.o;
+    program.file[1].link = 3;
+    program.file[2] = a.d;
+    if (workload_ == "extreme") {
+      const ChipDetailDrfs b = with_detail(second, DrfOp::kReflectance);
+      program.file[2].link = 4;
+      program.file[3] = b.t;
+      program.file[3].link = 5;
+      program.file[4] = b.o;
+      program.file[4].link = 6;
+      program.file[5] = b.d;
+      program.file[5].link = 7;
+      // A sphere environment map on a one-plane map, at the pixel's (uN, vN).
+      program.file[6] = plain(draw_drf(rng, s.maps[first]));
+      program.file[6].sampler.addressing = texram::Addressing::kSphere;
+      program.file[6].op = DrfOp::kEnvironment;
+      program.file[6].takes_coords = true;
+    }
+  }
+  std::vector<Txn> items = chip_program_items(program.file);
+  // Spans of 8 pixels (the patent's 8-pixel scan lines), each starting anywhere on the map, the
+  // pixels stepping along u.
+  const Drf& t = program.file[0];
+  int32_t u0 = 0, v0 = 0;
+  for (size_t i = 0; items.size() < count; ++i) {
+    if (i % 8 == 0) {
+      u0 = static_cast<int32_t>(uniform(rng, 0, (int64_t{kOne} << t.log2_w) - 1));
+      v0 = static_cast<int32_t>(uniform(rng, 0, (int64_t{kOne} << t.log2_h) - 1));
+    }
+    PixelParameter p;
+    p.lead = 1;
+    p.request = {u0 + static_cast<int32_t>(i % 8) * step, v0, lambda, 0xFFC0'8040u};
+    items.push_back(chip_param_item(p));
+    if (workload_ == "extreme") {  // the environment's (uN, vN): a small arc along the span
+      PixelParameter q;
+      q.lead = 1;
+      const int64_t n = i % 8 + static_cast<int64_t>(u0 & 0xFF) * 8;
+      q.request = {static_cast<int32_t>(n * kUnitOne / 2048 - kUnitOne / 2),
+                   static_cast<int32_t>((v0 & 0xFF) * kUnitOne / 512 - kUnitOne / 4), 0, 0};
+      items.push_back(chip_param_item(q));
+    }
+  }
+  return items;
 }
 
 std::vector<Txn> TexramChipBlock::setup_items() const {
@@ -487,6 +756,126 @@ std::vector<Txn> TexramChipBlock::directed_items() const {
     add(chip_program_items(p.file));
     for (int lead : p.leads) pixels(p, lead, 3);
   }
+  // Footprint assembly (000 §10): DRF 1 a texture on a one-plane map, every probe limit 0..7
+  // (5..7 act as 4) with both q rules, anisotropic footprints from a point to 64 texels; 16
+  // probes along r1 = (16, 0) with r2 = (0, 1/2).
+  size_t plain = 0;
+  while (plain + 1 < s.maps.size() && four_planes(s.maps[plain].setup.config.kind)) ++plain;
+  ChipProgram fp;
+  fp.file[0] = draw_drf(rng, s.maps[plain]);
+  fp.file[0].op = DrfOp::kTexture;
+  fp.file[0].footprint = true;
+  fp.file[0].link = 0;
+  fp.leads = {1};
+  add(chip_program_items(fp.file));
+  for (int limit = 0; limit < 8; ++limit) {
+    for (const auto rule : {footprint::QRule::kHeights, footprint::QRule::kSides}) {
+      fp.file[0].log2_max_probes = limit;
+      fp.file[0].q_rule = rule;
+      items.push_back(chip_drf_item({1, 4, texram::chip::pack_control(fp.file[0])}));
+      pixels(fp, 1, 3);
+      PixelParameter p = draw_parameter(rng, fp.file[0], 1);
+      p.r1u = 16 * kOne;
+      p.r1v = p.r2u = 0;
+      p.r2v = kOne / 2;
+      items.push_back(chip_param_item(p));
+    }
+  }
+  // Detail maps (000 §9): 1 a texture with a detail map -> 2 its offsets -> 3 its detail map,
+  // each combine, at the lambdas where the rules change; then with footprint assembly, small
+  // footprints (the marcher's lambda below 0); then border mode with the offsets' lookup
+  // outside the texture (no region).
+  constexpr std::array<int32_t, 12> kDetailLambdas = {0,
+                                                      -1,
+                                                      -kOne / 2,
+                                                      -kOne + 1,
+                                                      -kOne,
+                                                      -kOne - 1,
+                                                      -3 * kOne / 2,
+                                                      -4 * kOne,
+                                                      -4 * kOne - 1,
+                                                      -5 * kOne,
+                                                      kLodMin,
+                                                      kOne};
+  for (size_t k = 0; k < 2 * s.offsets.size(); ++k) {
+    ChipDetailDrfs c = chip_detail_drfs(rng, s, k % s.offsets.size(), k % s.details.size());
+    c.t.op = DrfOp::kTexture;
+    c.t.footprint = false;
+    c.t.detail_combine = static_cast<texram::DetailCombine>(k % 2);
+    c.t.link = 2;
+    c.o.link = 3;
+    c.d.link = 0;
+    ChipProgram dp;
+    dp.file[0] = c.t;
+    dp.file[1] = c.o;
+    dp.file[2] = c.d;
+    dp.leads = {1};
+    add(chip_program_items(dp.file));
+    for (const int32_t lambda : kDetailLambdas) {
+      PixelParameter p = draw_parameter(rng, c.t, 1);
+      p.request.lambda = lambda;
+      items.push_back(chip_param_item(p));
+    }
+    dp.file[0].footprint = true;
+    dp.file[0].log2_max_probes = static_cast<int>(k % 5);
+    items.push_back(chip_drf_item({1, 4, texram::chip::pack_control(dp.file[0])}));
+    for (int i = 0; i < 3; ++i) {  // 1/4 texel: 1 probe at lambda -2.7; 3/2, 2: 4 probes
+      PixelParameter p = draw_parameter(rng, c.t, 1);
+      p.r1u = i == 0 ? kOne / 4 : kOne + i * kOne / 2;
+      p.r1v = kOne / 10;
+      p.r2u = -kOne / 50;
+      p.r2v = kOne / 10;
+      items.push_back(chip_param_item(p));
+    }
+    pixels(dp, 1, 2);
+  }
+  {
+    ChipDetailDrfs c = chip_detail_drfs(rng, s, 0, 0);
+    c.t.op = DrfOp::kTexture;
+    c.t.footprint = false;
+    c.t.sampler.border_u = c.t.sampler.border_v = texram::Border::kBorder;
+    c.o.sampler = texram::offset_sampler(c.t.sampler);
+    c.t.link = 2;
+    c.o.link = 3;
+    c.d.link = 0;
+    ChipProgram dp;
+    dp.file[0] = c.t;
+    dp.file[1] = c.o;
+    dp.file[2] = c.d;
+    add(chip_program_items(dp.file));
+    for (const int32_t u : {-2 * kOne, -kOne / 4, kOne / 4}) {
+      PixelParameter p = draw_parameter(rng, c.t, 1);
+      p.request.u = u;
+      p.request.lambda = -2 * kOne;
+      items.push_back(chip_param_item(p));
+    }
+  }
+  // The patent's extreme chain (000 §5): a texture and a reflectance map, each with a detail
+  // map, then the cube environment map [new coordinates]: 1 -> 2 -> ... -> 7, seven steps;
+  // then led by the offsets DRF 2 (read on its own: nothing more than a read).
+  {
+    ChipDetailDrfs a = chip_detail_drfs(rng, s, 0, 0);
+    ChipDetailDrfs b = chip_detail_drfs(rng, s, 1 % s.offsets.size(), 1 % s.details.size());
+    a.t.op = DrfOp::kTexture;
+    b.t.op = DrfOp::kReflectance;
+    a.t.takes_coords = b.t.takes_coords = false;
+    a.t.link = 2;
+    a.o.link = 3;
+    a.d.link = 4;
+    b.t.link = 5;
+    b.o.link = 6;
+    b.d.link = 7;
+    ChipProgram ex;
+    ex.file = {a.t, a.o, a.d, b.t, b.o, b.d, cube_drf(rng, s)};
+    ex.file[6].op = DrfOp::kEnvironment;
+    ex.file[6].takes_coords = true;
+    ex.file[6].footprint = false;
+    ex.file[6].link = 0;
+    ex.leads = {1};
+    add(chip_program_items(ex.file));
+    pixels(ex, 1, 12);
+    pixels(ex, 2, 2);
+  }
   // Last (the flag is sticky): a link cycle, DRF 1 -> 1, ends after kMaxSteps accesses.
   ChipProgram cycle = seven;
   cycle.file[0].link = 1;
@@ -502,6 +891,7 @@ std::vector<Txn> TexramChipBlock::directed_items() const {
 }
 
 std::vector<Txn> TexramChipBlock::random_items(std::mt19937_64& rng, size_t count) const {
+  if (!workload_.empty()) return workload_items(count);
   std::vector<Txn> items;
   items.reserve(count + 16);
   ChipProgram program = first_;
@@ -554,14 +944,28 @@ constexpr const char* kFaceHigh = "face 6 or 7 (taken modulo 6)";
 constexpr const char* kSphere = "sphere addressing";
 constexpr const char* kFaces[] = {"cube face +X", "cube face -X", "cube face +Y",
                                   "cube face -Y", "cube face +Z", "cube face -Z"};
+constexpr const char* kFootprint = "footprint assembly";
+constexpr const char* kFootprint16 = "footprint assembly, 16 probes";
+constexpr const char* kFootprintSides = "footprint assembly, q rule sides";
+constexpr const char* kFootprintBelow0 = "footprint assembly, the marcher's lambda below 0";
+constexpr const char* kDetailReplace = "detail map, replace";
+constexpr const char* kDetailModulate = "detail map, modulate";
+constexpr const char* kDetailBlend = "detail map, -1 < lambda < 0";
+constexpr const char* kDetailMinus1 = "detail map, lambda = -1";
+constexpr const char* kDetailBelow4 = "detail map, lambda below -4";
+constexpr const char* kDetailProbes = "detail map under footprint assembly";
+constexpr const char* kExtreme = "texture and reflectance with detail maps, then environment";
 
 }  // namespace
 
 std::vector<std::string> TexramChipBlock::coverage_cases() const {
   std::vector<std::string> cases(std::begin(kOpNames), std::end(kOpNames));
   cases.insert(cases.end(), std::begin(kFaces), std::end(kFaces));
-  cases.insert(cases.end(), {kChain7, kStepLimit, kNewCoords, kLead0, kWriteBusy, kLambdaMin,
-                             kLambdaMax, kFaceHigh, kSphere});
+  cases.insert(cases.end(),
+               {kChain7,      kStepLimit,      kNewCoords,       kLead0,         kWriteBusy,
+                kLambdaMin,   kLambdaMax,      kFaceHigh,        kSphere,        kFootprint,
+                kFootprint16, kFootprintSides, kFootprintBelow0, kDetailReplace, kDetailModulate,
+                kDetailBlend, kDetailMinus1,   kDetailBelow4,    kDetailProbes,  kExtreme});
   return cases;
 }
 
@@ -593,6 +997,7 @@ void TexramChipBlock::cover(const std::vector<Txn>& items, size_t index, const T
   if (w.drfs.size() == static_cast<size_t>(kMaxSteps) && !w.limited) ++cov[kChain7];
   if (w.limited) ++cov[kStepLimit];
   size_t param = first;
+  std::vector<DrfOp> details;  // the ops of the DRFs with a detail map, in chain order
   for (size_t k = 0; k < w.drfs.size(); ++k) {
     const Drf& d = cover_file_[static_cast<size_t>(w.drfs[k] - 1)];
     if (k > 0 && w.takes[k]) {
@@ -606,6 +1011,35 @@ void TexramChipBlock::cover(const std::vector<Txn>& items, size_t index, const T
     if (d.sampler.addressing == texram::Addressing::kSphere) ++cov[kSphere];
     if (p.request.lambda == kLodMin) ++cov[kLambdaMin];
     if (p.request.lambda == kLodMax) ++cov[kLambdaMax];
+    // The probes' lambda: the marcher's with footprint assembly.
+    int32_t lambda = p.request.lambda;
+    if (d.footprint) {
+      ++cov[kFootprint];
+      footprint::Config config;
+      config.log2_max_probes = std::min(d.log2_max_probes, fmts::kMaxProbeLog2);
+      config.q_rule = d.q_rule;
+      const footprint::Plan plan =
+          footprint::plan({p.request.u, p.request.v, p.r1u, p.r1v, p.r2u, p.r2v, 0}, config);
+      lambda = plan.lambda;
+      if (plan.log2_n == fmts::kMaxProbeLog2) ++cov[kFootprint16];
+      if (d.q_rule == footprint::QRule::kSides) ++cov[kFootprintSides];
+      if (lambda < 0) ++cov[kFootprintBelow0];
+    }
+    int extra = 0;
+    texram::chip::next_drf(cover_file_, d, &extra);
+    if (extra != 0 && lambda < 0) {
+      ++cov[d.detail_combine == texram::DetailCombine::kModulate ? kDetailModulate
+                                                                 : kDetailReplace];
+      if (lambda > -kOne) ++cov[kDetailBlend];
+      if (lambda == -kOne) ++cov[kDetailMinus1];
+      if (lambda < -4 * kOne) ++cov[kDetailBelow4];
+      if (d.footprint) ++cov[kDetailProbes];
+    }
+    if (extra != 0) details.push_back(d.op);
+  }
+  if (details.size() >= 2 && details[0] == DrfOp::kTexture && details[1] == DrfOp::kReflectance &&
+      cover_file_[static_cast<size_t>(w.drfs.back() - 1)].op == DrfOp::kEnvironment) {
+    ++cov[kExtreme];
   }
   if (index + 1 < items.size() && items[index + 1].f[0] != D::op_param) ++cov[kWriteBusy];
 }
