@@ -14,13 +14,6 @@ namespace {
 
 constexpr int kFastFpPortFrac = formats::kTexCoord.frac_bits;  // 8
 
-int64_t fast_magnitude(int32_t c) { return c < 0 ? -int64_t{c} : int64_t{c}; }
-
-int64_t fast_shift_toward_zero(int32_t c, int sh) {
-  const int64_t m = fast_magnitude(c) >> sh;
-  return c < 0 ? -m : m;
-}
-
 // footprint.cpp's to_port: wrap modulo 2^16 texels, or saturate.
 int32_t fast_to_port(int64_t raw, texram::Border border) {
   constexpr int kW = formats::kTexCoord.width();
@@ -55,16 +48,7 @@ int64_t FastFootprint::lg(uint64_t x) const {
 // footprint::plan with the table looked up; the comments there say why each step is so.
 Plan FastFootprint::plan(const Request& r) const {
   const Widths& w = config_.widths;
-  const int64_t largest = std::max(
-      {fast_magnitude(r.r1u), fast_magnitude(r.r1v), fast_magnitude(r.r2u), fast_magnitude(r.r2v)});
-  const int sh =
-      std::max(0, static_cast<int>(std::bit_width(static_cast<uint64_t>(largest))) - w.deriv_bits);
-  const int64_t a1u = fast_shift_toward_zero(r.r1u, sh), a1v = fast_shift_toward_zero(r.r1v, sh);
-  const int64_t a2u = fast_shift_toward_zero(r.r2u, sh), a2v = fast_shift_toward_zero(r.r2v, sh);
-  const auto s1 = static_cast<uint64_t>(a1u * a1u + a1v * a1v);
-  const auto s2 = static_cast<uint64_t>(a2u * a2u + a2v * a2v);
-  const int64_t cross = a1u * a2v - a1v * a2u;
-  const auto area = static_cast<uint64_t>(cross < 0 ? -cross : cross);
+  const auto [s1, s2, area, sh] = extents(r, w);
 
   Plan p;
   p.r2_longer = s2 > s1;

@@ -68,22 +68,26 @@ Log2 log2_fixed(uint64_t x, const Widths& widths) {
           (int64_t{e} << widths.log_frac) + log2_table_entry(static_cast<uint32_t>(index), widths)};
 }
 
-Plan plan(const Request& r, const Config& config) {
-  const Widths& w = config.widths;
-  check(w);
-  if (config.log2_max_probes < 0 || config.log2_max_probes > formats::kMaxProbeLog2) {
-    throw std::invalid_argument("footprint: log2_max_probes must be 0..4");  // the RTL asserts it
-  }
+Extents extents(const Request& r, const Widths& w) {
   const int64_t largest =
       std::max({magnitude(r.r1u), magnitude(r.r1v), magnitude(r.r2u), magnitude(r.r2v)});
   const int sh =
       std::max(0, static_cast<int>(std::bit_width(static_cast<uint64_t>(largest))) - w.deriv_bits);
   const int64_t a1u = shift_toward_zero(r.r1u, sh), a1v = shift_toward_zero(r.r1v, sh);
   const int64_t a2u = shift_toward_zero(r.r2u, sh), a2v = shift_toward_zero(r.r2v, sh);
-  const auto s1 = static_cast<uint64_t>(a1u * a1u + a1v * a1v);
-  const auto s2 = static_cast<uint64_t>(a2u * a2u + a2v * a2v);
   const int64_t cross = a1u * a2v - a1v * a2u;
-  const auto area = static_cast<uint64_t>(cross < 0 ? -cross : cross);
+  return {static_cast<uint64_t>(a1u * a1u + a1v * a1v),
+          static_cast<uint64_t>(a2u * a2u + a2v * a2v),
+          static_cast<uint64_t>(cross < 0 ? -cross : cross), sh};
+}
+
+Plan plan(const Request& r, const Config& config) {
+  const Widths& w = config.widths;
+  check(w);
+  if (config.log2_max_probes < 0 || config.log2_max_probes > formats::kMaxProbeLog2) {
+    throw std::invalid_argument("footprint: log2_max_probes must be 0..4");  // the RTL asserts it
+  }
+  const auto [s1, s2, area, sh] = extents(r, w);
 
   Plan p;
   p.r2_longer = s2 > s1;

@@ -94,6 +94,14 @@ Log2 log2_fixed(uint64_t x, const Widths& widths);
 // LOG[i], i = 0 .. 2^T, the table's entries (F fraction bits).
 uint32_t log2_table_entry(uint32_t index, const Widths& widths);
 
+// The setup's first step: r1 and r2 scaled down together to deriv_bits (truncated toward
+// zero) by `shift` bits, their squared lengths and the area |r1 x r2| of the parallelogram.
+struct Extents {
+  uint64_t s1 = 0, s2 = 0, area = 0;
+  int shift = 0;
+};
+Extents extents(const Request& request, const Widths& widths);
+
 // The setup's result: what the marcher sends down with each probe.
 struct Plan {
   int log2_n = 0;          // k: N = 2^k probes
