@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# A bundled scene renders on every engine: ideal, golden, and hls and rtl each checked bit for
-# bit against golden, pixel by pixel and unit by unit (outputs, memory requests, counters).
+# A bundled scene renders on every engine: ideal, and hls and rtl each checked bit for bit against
+# golden (rendered inside each check), pixel by pixel and unit by unit (outputs, memory requests,
+# counters); and at rtl through four TEXRAM chips, checked against golden through them.
 # A volume scene (a "volume" section) renders at ideal and golden (against the ideal), on four
 # chips bit for bit as on one, and is refused at hls and rtl with the reason: the volume unit has
 # no hls or rtl engine yet (tb/render/volume_engine.hpp; its block is being built).
@@ -12,28 +13,28 @@ scenes=("$@")
 ((${#scenes[@]})) || scenes=("$root"/scenes/*.json)
 for scene in "${scenes[@]}"; do
   name=$(basename "$scene" .json)
-  runs=("ideal" "golden" "hls --check golden" "rtl --check golden")
-  # A fly-over (render/flyover.hpp) has no ideal render: its frames at golden, hls and rtl, and a
-  # frame rendered alone equals the same frame of the range (the clip-map is the eye's alone).
+  # golden renders inside every --check golden run (its fragments and units are the reference),
+  # so it is not rendered on its own as well.
+  runs=("ideal" "hls --check golden" "rtl --check golden")
+  # A fly-over (render/flyover.hpp) has no ideal render: its frames at hls and rtl, and a frame
+  # rendered alone equals the same frame of the range (the clip-map is the eye's alone).
   grep -q '"flyover"' "$scene" && runs=("${runs[@]:1}")
-  # Through the TEXRAM chips (--chips, render/chip_stage.hpp) too, at rtl, when the golden render
-  # through them (its report lists each material's chip) put a material on one.
-  chips=("golden --chips 4" "rtl --check golden --chips 4")
+  # Through the TEXRAM chips (--chips, render/chip_stage.hpp) too, at rtl against golden through
+  # the same chips; its report lists each material's chip, or why a material stays on separate
+  # units.
+  chips=("rtl --check golden --chips 4")
   grep -q '"flyover"' "$scene" && chips=()  # the clip-map unit's (003), not the TEXRAM's
   volume=false
   # A volume scene (docs/volume.md): ideal, and golden against it; its --chips are slabs (below).
   grep -q '"volume"' "$scene" && volume=true && runs=("ideal" "golden --compare ideal") && chips=()
-  chips_report=""
   for run in "${runs[@]}" ${chips[@]+"${chips[@]}"}; do
-    if [[ $run == "${chips[1]:-}" ]] && ! grep -qE "^    .*: chip [0-9]+, DRF" <<<"$chips_report"; then
-      echo "ok   $name: no material on the chips ($(grep -m1 "separate units" <<<"$chips_report"))"
-      continue
-    fi
     # shellcheck disable=SC2086
     if out=$("$texsim" render "$scene" --engine $run --out "$work/$name" --no-progress 2>&1); then
       verdict=$(grep -oE "MATCH[^,]*|MISMATCH[^,]*" <<<"$out" | head -1)
-      echo "ok   $name: $run ${verdict:+($verdict)}"
-      [[ $run == "${chips[0]:-}" ]] && chips_report=$out
+      on_chips=""
+      [[ $run == "${chips[0]:-}" ]] && ! grep -qE "^    .*: chip [0-9]+, DRF" <<<"$out" &&
+        on_chips=", no material on the chips: $(grep -m1 "separate units" <<<"$out" | sed 's/^ *//')"
+      echo "ok   $name: $run ${verdict:+($verdict)}$on_chips"
     else
       echo "FAIL $name: $run"; echo "$out" | tail -15
       failures=$((failures + 1))

@@ -110,7 +110,7 @@ std::vector<std::string> chip_lines(const host::Scene& scene, const ChipStage& c
     std::string passes;
     for (int lead : p.passes) {
       if (!passes.empty()) passes += " |";
-      for (int n : texram::chip::chain(c.drfs, lead)) passes += " " + std::to_string(n);
+      for (int n : texram::chip::chain(c.drfs, lead)) passes += fmt::format(" {}", n);
     }
     lines.push_back(fmt::format("{}: chip {}, DRF{}", name, p.chip, passes));
   }

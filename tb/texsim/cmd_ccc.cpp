@@ -119,8 +119,6 @@ std::optional<ImageRgb8> magnify_through_unit(const std::string& ccc_path,
   return img;
 }
 
-const std::vector<std::string> kEngines{"golden", "hls", "rtl"};
-
 }  // namespace
 
 void add_ccc_command(CLI::App& app, ExitCode& exit_code) {
@@ -147,11 +145,11 @@ void add_ccc_command(CLI::App& app, ExitCode& exit_code) {
     cmd->add_option("output", *out, "Output image (format from the extension, written atomically)")
         ->required();
     cmd->add_option("--engine", *engine, "golden | hls | rtl")
-        ->check(CLI::IsMember(kEngines))
+        ->check(CLI::IsMember(kCosimEngines))
         ->capture_default_str();
     cmd->add_option("--check", *check_against,
                     "Also decode with this engine and compare every texel bit for bit")
-        ->check(CLI::IsMember(kEngines));
+        ->check(CLI::IsMember(kCosimEngines));
     cmd->callback([=, &exit_code] {
       const ccc::Texture tex = ccc::read_ccc(*in);
       const ImageRgb8 img = decode_through(tex, *engine);

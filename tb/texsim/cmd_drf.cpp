@@ -20,7 +20,7 @@ namespace {
 using texram::chip::Drf;
 using texram::chip::kDrfs;
 
-struct Args {
+struct DrfArgs {
   std::string scene;
   int chips = 4;
   bool writes = false;
@@ -91,7 +91,7 @@ void print_chip(const host::Scene& scene, const render::ChipProgram& chip, int c
   (void)scene;
 }
 
-void run(const Args& a) {
+void run_drf(const DrfArgs& a) {
   const host::Scene scene = host::load_scene(a.scene);
   // Golden loads the maps as the chip holds them (a mipgen material's levels have the sizes of
   // the host pyramid).
@@ -135,14 +135,14 @@ void add_drf_command(CLI::App& app, ExitCode& exit_code) {
       "addressing, link, whether a new parameter comes first) and every map's cells; per "
       "material its chain and the parameters each pixel brings; the materials the TEXRAM does "
       "not sample, and why (docs/texram_chip.md)");
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<DrfArgs>();
   cmd->add_option("scene", a->scene, "The scene file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--chips", a->chips, "TEXRAM chips to place the materials on (first fit)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   cmd->add_flag("--writes", a->writes, "Also list the write-port words that load each DRF");
   cmd->callback([a, &exit_code] {
-    run(*a);
+    run_drf(*a);
     exit_code.value = 0;
   });
 }

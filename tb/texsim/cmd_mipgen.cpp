@@ -25,7 +25,6 @@
 namespace tmu::texsim {
 namespace {
 
-const std::vector<std::string> kEngines{"golden", "hls", "rtl"};
 constexpr std::array<const char*, 3> kPlaneNames{"R", "G", "B"};
 
 uint8_t channel(const Rgb8& c, int plane) { return plane == 0 ? c.r : plane == 1 ? c.g : c.b; }
@@ -83,11 +82,11 @@ void add_mipgen_command(CLI::App& app, ExitCode& exit_code) {
   cmd->add_option("input", args->in, "Input image")->required()->check(CLI::ExistingFile);
   cmd->add_option("outdir", args->out_dir, "Output directory (created)")->required();
   cmd->add_option("--engine", args->engine, "golden | hls | rtl")
-      ->check(CLI::IsMember(kEngines))
+      ->check(CLI::IsMember(kCosimEngines))
       ->capture_default_str();
   cmd->add_option("--check", args->check,
                   "Also run this engine and compare every write bit for bit")
-      ->check(CLI::IsMember(kEngines));
+      ->check(CLI::IsMember(kCosimEngines));
   cmd->add_flag("--interlaced", args->interlaced,
                 "Interlaced source: field 1 (even lines), then field 2 (odd lines, each texel\n"
                 "with the one above it, read back from the banks)");

@@ -17,7 +17,7 @@
 namespace tmu::texsim {
 namespace {
 
-struct Args {
+struct NurbsArgs {
   std::string scene, wireframe;
   std::optional<double> mc, dc, tc;
 };
@@ -65,7 +65,7 @@ ImageRgb8 wireframe(const host::Scene& scene, const std::vector<host::Mesh>& mes
   return image;
 }
 
-void run(const Args& a) {
+void run_nurbs(const NurbsArgs& a) {
   host::Scene scene = host::load_scene(a.scene);
   std::vector<glm::ivec2> sizes;
   for (const host::Material& m : scene.materials)
@@ -120,7 +120,7 @@ void add_nurbs_command(CLI::App& app, ExitCode& exit_code) {
       "MC or DC threshold asks for, the steps the TC threshold asks for, the combined count and "
       "claim 12's level; the joins between patches; --wireframe draws the triangles as the "
       "camera sees them. --mc, --dc, --tc replace every object's thresholds (docs/nurbs.md)");
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<NurbsArgs>();
   cmd->add_option("scene", a->scene, "The scene file")->required()->check(CLI::ExistingFile);
   const auto positive = CLI::PositiveNumber;
   cmd->add_option("--mc", a->mc, "longest step in modelling units")->check(positive);
@@ -128,7 +128,7 @@ void add_nurbs_command(CLI::App& app, ExitCode& exit_code) {
   cmd->add_option("--tc", a->tc, "longest step in texels of level 0")->check(positive);
   cmd->add_option("--wireframe", a->wireframe, "Write the triangles' edges as a PNG");
   cmd->callback([a, &exit_code] {
-    run(*a);
+    run_nurbs(*a);
     exit_code.value = 0;
   });
 }

@@ -25,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Args {
+struct RegressArgs {
   std::string list, out = "regress_out";
   int jobs = 0;
   double timeout = 600;
@@ -48,7 +48,7 @@ void report_line(const RegressResult& r) {
 }
 
 // The JUnit XML and the summary of `results`; the exit code.
-int report(const Args& a, const RegressOptions& o, const std::vector<RegressResult>& results,
+int report(const RegressArgs& a, const RegressOptions& o, const std::vector<RegressResult>& results,
            double seconds) {
   write_junit(o.out / "junit.xml", "texsim regress " + fs::path(a.list).filename().string(),
               results);
@@ -70,7 +70,7 @@ int report(const Args& a, const RegressOptions& o, const std::vector<RegressResu
 
 // The Slurm job array: one task per test, each `texsim regress LIST --task I` with the same
 // outputs, --jobs of them at a time (docs/regress.md shows the script).
-fs::path write_array_script(const Args& a, const RegressOptions& o, size_t tests) {
+fs::path write_array_script(const RegressArgs& a, const RegressOptions& o, size_t tests) {
   const fs::path dir = o.out / "slurm";
   fs::create_directories(dir);
   const fs::path script = dir / "array.sh";
@@ -93,7 +93,7 @@ fs::path write_array_script(const Args& a, const RegressOptions& o, size_t tests
 }
 
 // Submits the array; returns false when sbatch itself failed (not a test).
-bool submit(const Args& a, const RegressOptions& o, size_t tests) {
+bool submit(const RegressArgs& a, const RegressOptions& o, size_t tests) {
   const fs::path script = write_array_script(a, o, tests);
   std::string command = a.sbatch + (a.no_wait ? "" : " --wait");
   if (!a.sbatch_args.empty()) command += " " + a.sbatch_args;
@@ -107,7 +107,7 @@ bool submit(const Args& a, const RegressOptions& o, size_t tests) {
   return status != -1 && WIFEXITED(status) && WEXITSTATUS(status) <= (a.no_wait ? 0 : 1);
 }
 
-int run(const Args& a) {
+int run(const RegressArgs& a) {
   const std::vector<RegressTest> tests = read_regress_list(a.list);
   RegressOptions o;
   o.texsim = self();
@@ -163,7 +163,7 @@ void add_regress_command(CLI::App& app, ExitCode& exit_code) {
       "Slurm job array (--slurm); writes OUT/junit.xml, OUT/summary.txt (each failure's "
       "reproduce command, waveform and log) and OUT/logs/. Exit 0 all passed, 1 a test failed, "
       "2 a bad list (docs/regress.md)");
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<RegressArgs>();
   cmd->add_option("list", a->list, "The regression list")->required()->check(CLI::ExistingFile);
   cmd->add_option("--out", a->out, "Where the logs, waveforms, renders and reports go")
       ->capture_default_str();

@@ -14,6 +14,7 @@
 #include "texram/trilinear.hpp"
 #include "texram/trilinear_ideal.hpp"
 #include "texsim/commands.hpp"
+#include "texsim/ideal_rgba.hpp"
 #include "texsim/request_file.hpp"
 #include "texsim/texram_options.hpp"
 
@@ -26,16 +27,6 @@ texram::Request port_request(const SampleRequest& r) {
   return {static_cast<int32_t>(TexCoord::from_double(r.u).raw()),
           static_cast<int32_t>(TexCoord::from_double(r.v).raw()),
           static_cast<int32_t>(Lod::from_double(r.lambda).raw()), r.shade};
-}
-
-uint32_t round_rgba(const std::array<double, 4>& c) {
-  uint32_t out = 0;
-  for (int ch = 0; ch < 4; ++ch) {
-    const auto v =
-        static_cast<uint32_t>(std::clamp(std::floor(c[static_cast<size_t>(ch)] + 0.5), 0.0, 255.0));
-    out |= v << (24 - 8 * ch);
-  }
-  return out;
 }
 
 struct Run {

@@ -116,7 +116,7 @@ std::pair<double, double> random_error(const TexramTexture& tex, const SamplerCo
   return {max_err, sum / (4.0 * count)};
 }
 
-std::vector<Widths> parse_settings(const std::string& text) {
+std::vector<Widths> parse_widths(const std::string& text) {
   std::vector<Widths> out;
   std::stringstream ss(text);
   for (std::string item; std::getline(ss, item, ';');) {
@@ -135,7 +135,7 @@ std::vector<Widths> parse_settings(const std::string& text) {
 }  // namespace
 
 void sweep_trilinear(const SweepArgs& args) {
-  const std::vector<Widths> settings = parse_settings(args.settings);
+  const std::vector<Widths> settings = parse_widths(args.settings);
   const TexramTexture photo =
       texram::import_image(patterns::default_image(256, 256), texram::TexelKind::kTrueColour);
   const TexramTexture checker =

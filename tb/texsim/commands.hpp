@@ -3,8 +3,13 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
 
 namespace tmu::texsim {
+
+// The engines a command that co-simulates a block accepts (--engine).
+inline const std::vector<std::string> kCosimEngines{"golden", "hls", "rtl"};
 
 struct ExitCode {
   int value = 0;

@@ -34,19 +34,19 @@ using deflect::SphereAngle;
 using deflect::SphereGrid;
 using glm::dvec3;
 
-struct Setting {
+struct DeflectionSetting {
   int phi_bits = 9, lut_exp = 4, lut_mant = 5, value_bits = 10;
   std::string name() const {
     return fmt::format("{},{},{},{}", phi_bits, lut_exp, lut_mant, value_bits);
   }
 };
 
-std::vector<Setting> parse_settings(const std::string& text) {
-  std::vector<Setting> out;
+std::vector<DeflectionSetting> parse_deflection_settings(const std::string& text) {
+  std::vector<DeflectionSetting> out;
   std::stringstream list(text);
   std::string item;
   while (std::getline(list, item, ';')) {
-    Setting s;
+    DeflectionSetting s;
     char c1 = 0, c2 = 0, c3 = 0;
     std::stringstream one(item);
     if (!(one >> s.phi_bits >> c1 >> s.lut_exp >> c2 >> s.lut_mant >> c3 >> s.value_bits) ||
@@ -202,7 +202,8 @@ Workload scene_workload(const std::string& path) {
   return w;
 }
 
-SettingResult run_setting(const Setting& s, const Workload& work, const DeflectionSweepArgs& args) {
+SettingResult run_setting(const DeflectionSetting& s, const Workload& work,
+                          const DeflectionSweepArgs& args) {
   deflect::EncoderConfig ec;
   ec.grid.phi_bits = s.phi_bits;
   ec.lut_exp = s.lut_exp;
@@ -296,7 +297,7 @@ constexpr size_t kUnitItems = 20000;
 
 // Settings share units (every A = 9 setting the deflection unit): each unit at each of its
 // parameters runs once, `done` keeping the checks by unit and parameters.
-UnitChecks check_units(const Setting& s, std::map<std::string, RtlCheck>& done) {
+UnitChecks check_units(const DeflectionSetting& s, std::map<std::string, RtlCheck>& done) {
   const auto once = [&done](const std::string& key, const std::string& block,
                             const tb::BlockOptions& o) {
     auto it = done.find(key);
@@ -321,7 +322,7 @@ UnitChecks check_units(const Setting& s, std::map<std::string, RtlCheck>& done) 
 }  // namespace
 
 void sweep_deflection(const DeflectionSweepArgs& args) {
-  const std::vector<Setting> settings = parse_settings(args.settings);
+  const std::vector<DeflectionSetting> settings = parse_deflection_settings(args.settings);
   // The errors, hit rates and speed are the golden units'; the cycles a formula on golden's
   // misses (one per bumped pixel plus the map memory's latency per miss), not a timed run.
   SweepTable table({"A,E,M,W",
@@ -345,7 +346,7 @@ void sweep_deflection(const DeflectionSweepArgs& args) {
       args.scene.empty() ? sphere_workload(args.size) : scene_workload(args.scene);
   fmt::print("workload: {} ({} pixels through the chain)\n", work.name, work.samples.size());
   std::map<std::string, RtlCheck> unit_checks;
-  for (const Setting& s : settings) {
+  for (const DeflectionSetting& s : settings) {
     const SettingResult r = run_setting(s, work, args);
     const SphereGrid g{s.phi_bits};
     const uint64_t q = g.quarter();

@@ -39,6 +39,7 @@
 #include "scene/scene.hpp"
 #include "texram/oiio_sampler.hpp"
 #include "texram/trilinear.hpp"
+#include "texsim/ideal_rgba.hpp"
 #include "texsim/sweep_support.hpp"
 
 namespace tmu::texsim {
@@ -105,13 +106,6 @@ double best_time(const Loop& loop) {
     best = std::min(best, since(t));
   }
   return best;
-}
-
-uint32_t round_rgba(const std::array<double, 4>& c) {
-  const auto ch = [&](size_t i) {
-    return static_cast<uint32_t>(std::lround(std::clamp(c[i], 0.0, 255.0)));
-  };
-  return texram::rgba(ch(0), ch(1), ch(2), ch(3));
 }
 
 footprint::Request footprint_request(const host::FragmentRecord& r) {

@@ -18,7 +18,7 @@
 namespace tmu::texsim {
 namespace {
 
-std::vector<footprint::Widths> parse_settings(const std::string& text) {
+std::vector<footprint::Widths> parse_setup_widths(const std::string& text) {
   std::vector<footprint::Widths> out;
   std::stringstream ss(text);
   for (std::string item; std::getline(ss, item, ';');) {
@@ -73,7 +73,7 @@ std::string check_setup_rtl(const footprint::Widths& w, bool* simulated) {
 }  // namespace
 
 void sweep_footprint_setup(const FootprintSetupSweepArgs& args) {
-  const std::vector<footprint::Widths> settings = parse_settings(args.settings);
+  const std::vector<footprint::Widths> settings = parse_setup_widths(args.settings);
   const std::vector<footprint::Request> footprints = random_footprints(args.count);
   footprint::IdealConfig ideal;
   ideal.log2_max_probes = 4;

@@ -25,7 +25,7 @@ namespace {
 
 constexpr int64_t kOne = int64_t{1} << perlin::kCoordFracBits;
 
-std::vector<perlin::NoiseConfig> parse_settings(const std::string& text) {
+std::vector<perlin::NoiseConfig> parse_noise_settings(const std::string& text) {
   std::vector<perlin::NoiseConfig> out;
   std::stringstream list(text);
   std::string item;
@@ -88,7 +88,7 @@ std::string cycles_per_output(const tb::RunResult& run) {
 }  // namespace
 
 void sweep_perlin(const PerlinSweepArgs& args) {
-  const std::vector<perlin::NoiseConfig> settings = parse_settings(args.settings);
+  const std::vector<perlin::NoiseConfig> settings = parse_noise_settings(args.settings);
   const std::string scene =
       args.scene.empty() ? std::string(TMU_SOURCE_DIR) + "/scenes/procedural.json" : args.scene;
   const std::vector<NamedMaterial> materials = scene_materials(scene);
