@@ -3,7 +3,8 @@
 # every test and the one failure (an injected fault), whose summary entry gives the command that
 # reproduces it (run again, it fails the same way), its waveform and its log; a test past the
 # timeout is killed and fails; a frame's bands run as tests and are joined equal to the whole
-# frame; a malformed list is exit 2 naming the line. Usage:
+# frame; a fly-over's frame ranges run as tests and are gathered equal to one process's frames;
+# a malformed list is exit 2 naming the line. Usage:
 # tests/regress_test.sh PATH/TO/texsim
 source "$(dirname "${BASH_SOURCE[0]}")/check_lib.sh" "$1"
 cd "$work" || exit 1
@@ -40,6 +41,30 @@ joined=$(sed -n 's/^bands of render.plain.1 joined: //p' bands/summary.txt)
 "$texsim" render "$root/scenes/plain.json" --engine golden --out whole >/dev/null 2>&1
 [[ -s $joined ]] && idiff -q "$joined" whole/render.png >/dev/null 2>&1 &&
   pass "3 bands as 3 tests, joined equal to the whole frame" || fail "$(cat bands_run.txt)"
+
+# A fly-over's frames split into ranges, each a test, gathered equal to the one-process frames.
+echo "render $root/scenes/flyover.json --engine golden --frames 0-4 --frames-per-test 2" >fly.txt
+"$texsim" regress fly.txt --out fly --jobs 2 >fly_run.txt 2>&1
+gathered=$(sed -n 's/^frames of render.flyover.1 gathered: \(.*\) (5 frames)$/\1/p' fly/summary.txt)
+names=$(ls fly/renders | grep -c '^render.flyover.1.frames')
+"$texsim" render "$root/scenes/flyover.json" --engine golden --frames 0-4 --out fly_whole \
+  >/dev/null 2>&1
+same=0
+for f in fly_whole/flyover.frame-000{0..4}.png; do
+  idiff -q "$f" "$gathered/$(basename "$f")" >/dev/null 2>&1 && same=$((same + 1))
+done
+[[ -n $gathered && $names -eq 3 && $same -eq 5 ]] &&
+  pass "frames 0-4 as 3 tests of 2, 2 and 1 frames, gathered equal to one process's frames" ||
+  fail "tests: $names, equal frames: $same; $(cat fly_run.txt)"
+printf 'render %s --frames-per-test 2\n' "$root/scenes/plain.json" >notfly.txt
+"$texsim" regress notfly.txt --out notfly >notfly_run.txt 2>&1
+[[ $? -eq 2 ]] && grep -q "notfly.txt: line 1: --frames-per-test is for a fly-over scene" \
+  notfly_run.txt && pass "--frames-per-test on a surface scene names the line" ||
+  fail "$(cat notfly_run.txt)"
+printf 'render %s --frames 3-99 --frames-per-test 2\n' "$root/scenes/flyover.json" >far.txt
+"$texsim" regress far.txt --out far >far_run.txt 2>&1
+[[ $? -eq 2 ]] && grep -q "far.txt: line 1: --frames: frames 3..99 of a path of 12 frames" \
+  far_run.txt && pass "a range past the path names the line" || fail "$(cat far_run.txt)"
 
 echo "render $root/scenes/grazing.json --engine hls" >slow.txt
 "$texsim" regress slow.txt --out slow --jobs 1 --timeout 1 >slow_run.txt 2>&1

@@ -16,6 +16,7 @@
 #include "blocks/specular_combine/specular_combine_block.hpp"
 #include "common/error.hpp"
 #include "common/image.hpp"
+#include "render/bands.hpp"
 #include "render/pipeline.hpp"
 #include "render/tiles.hpp"
 #include "render/unit_check.hpp"
@@ -515,6 +516,62 @@ TEST(RenderTest, MaterialsOnParallelThreadsGiveTheSerialRun) {
     EXPECT_EQ(parallel->host_work(), serial->host_work());
     EXPECT_EQ(parallel->fragments_of_outputs(), serial->fragments_of_outputs());
   }
+}
+
+// A frame in bands on parallel threads (render_bands, texsim render --bands): at rtl with a
+// check against golden, 3 bands on 3 threads give each band's units (outputs, cycles,
+// counters) and image as 3 bands one after another, every band matches golden, and the joined
+// frame is the whole frame's render.
+TEST(RenderTest, BandsOnParallelThreadsGiveTheSerialRun) {
+  const auto run = [&](int jobs, const std::string& out, std::vector<RenderReport>& reps) {
+    RenderOptions o = options(Level::kRtl, out);
+    o.check = Level::kGolden;
+    o.jobs = jobs;
+    std::stringstream log;
+    EXPECT_EQ(render_bands(kScenes + "default.json", o, 3, log, &reps), 0) << log.str();
+    return o;
+  };
+  std::vector<RenderReport> serial, parallel;
+  const RenderOptions a = run(1, "bands_serial", serial), b = run(3, "bands_parallel", parallel);
+  ASSERT_EQ(serial.size(), 3u);
+  ASSERT_EQ(parallel.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    SCOPED_TRACE("band " + std::to_string(i));
+    ASSERT_TRUE(parallel[i].check && parallel[i].check->match());
+    EXPECT_GT(parallel[i].check->units_compared, 0u);
+    ASSERT_EQ(parallel[i].units.size(), serial[i].units.size());
+    for (size_t u = 0; u < serial[i].units.size(); ++u) {
+      const UnitReport &x = serial[i].units[u], &y = parallel[i].units[u];
+      EXPECT_EQ(y.name, x.name);
+      EXPECT_EQ(y.transactions, x.transactions) << x.name;
+      EXPECT_EQ(y.cycles, x.cycles) << x.name;
+      EXPECT_EQ(y.counters, x.counters) << x.name;
+    }
+    const std::string band = "/" + band_stem(static_cast<int>(i), 3) + ".png";
+    EXPECT_EQ(read_image(b.out_dir + band).pixels, read_image(a.out_dir + band).pixels);
+  }
+  const RenderOptions whole = options(Level::kGolden, "bands_whole");
+  render("default.json", whole);
+  EXPECT_EQ(picture(b).pixels, picture(whole).pixels);
+  EXPECT_EQ(picture(a).pixels, picture(whole).pixels);
+}
+
+TEST(RenderTest, BandsAreForWholeSurfaceFrames) {
+  RenderOptions o = options(Level::kGolden, "bands_bad");
+  std::stringstream log;
+  o.tile = 1;
+  o.tiles = 2;
+  EXPECT_THROW(render_bands(kScenes + "default.json", o, 2, log), InputError);
+  o.tile = 0;
+  o.tiles = 1;
+  try {
+    render_bands(kScenes + "default.json", o, 100000, log);
+    ADD_FAILURE() << "more bands than rows accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--bands: 100000 bands for a frame of"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(o.out_dir)) << "nothing written for bad input";
 }
 
 }  // namespace

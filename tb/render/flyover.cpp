@@ -361,18 +361,43 @@ FlyoverRun run_flyover(const Flyover& fo, Level level, int first, int last, int 
   return out;
 }
 
+FrameRange parse_frame_range(const std::string& text) {
+  const auto whole = [&](const std::string& part) {
+    size_t end = 0;
+    int n = -1;
+    try {
+      n = std::stoi(part, &end);
+    } catch (const std::exception&) {
+    }
+    if (part.empty() || end != part.size() || n < 0)
+      throw InputError("--frames", "", "expected A or A-B (whole numbers), got '" + text + "'");
+    return n;
+  };
+  const size_t dash = text.find('-');
+  FrameRange r;
+  r.first = whole(text.substr(0, dash));
+  r.last = dash == std::string::npos ? r.first : whole(text.substr(dash + 1));
+  return r;
+}
+
+FrameRange frames_of_path(FrameRange range, int frames) {
+  if (range.last < 0) range.last = frames - 1;
+  if (range.first < 0 || range.first > range.last || range.last >= frames) {
+    throw InputError(
+        "--frames", "",
+        fmt::format("frames {}..{} of a path of {} frames", range.first, range.last, frames));
+  }
+  return range;
+}
+
 int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameRange range,
                    std::ostream& log) {
   if (o.level == Level::kIdeal || (o.check && *o.check == Level::kIdeal)) {
     throw InputError(scene_path, "flyover", "a fly-over renders at golden, hls or rtl");
   }
   const Flyover fo = load_flyover(scene_path, o.out_dir);
-  const int last = range.last < 0 ? fo.frames() - 1 : range.last;
-  if (range.first < 0 || range.first > last || last >= fo.frames()) {
-    throw InputError(
-        "--frames", "",
-        fmt::format("frames {}..{} of a path of {} frames", range.first, last, fo.frames()));
-  }
+  range = frames_of_path(range, fo.frames());
+  const int last = range.last;
   fs::create_directories(o.out_dir);  // only once the scene and the range are good
   make_virtual_texture(fo, log);
   FlyoverRun run = run_flyover(fo, o.level, range.first, last);

@@ -97,6 +97,11 @@ bool is_flyover(const std::string& scene_path);
 struct FrameRange {
   int first = 0, last = -1;
 };
+// "A" or "A-B", whole numbers; throws InputError("--frames", ...) otherwise.
+FrameRange parse_frame_range(const std::string& text);
+// `range` with last -1 made the path's last frame; throws InputError("--frames", ...) when it is
+// empty or leaves a path of `frames` frames.
+FrameRange frames_of_path(FrameRange range, int frames);
 
 // Renders the frames into out_dir: flyover.frame-NNNN.png, flyover.contact.png (every frame),
 // flyover.report.txt (per frame: texels loaded, rows per level, wayward samples, cycles). `check`

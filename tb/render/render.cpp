@@ -171,8 +171,7 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
 
   // The picture.
   const ImageRgb8 image = compose(scene, band, records, rgba);
-  const std::string stem =
-      o.tiles > 1 ? fmt::format("render.tile-{}-of-{}", o.tile, o.tiles) : "render";
+  const std::string stem = band_stem(o.tile, o.tiles);
   const std::string png = (dir / (stem + ".png")).string();
   if (o.tiles > 1) {
     write_band(png, image, band);

@@ -23,6 +23,10 @@ Band band_of(int index, int count, int width, int height) {
   return b;
 }
 
+std::string band_stem(int index, int count) {
+  return count > 1 ? fmt::format("render.tile-{}-of-{}", index, count) : "render";
+}
+
 std::pair<int, int> parse_tile(const std::string& text) {
   int i = 0, n = 0;
   char slash = 0;

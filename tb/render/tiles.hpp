@@ -20,6 +20,8 @@ struct Band {
 
 // Band i of n of a frame of `height` rows: rows [i * height / n, (i + 1) * height / n).
 Band band_of(int index, int count, int width, int height);
+// The stem of a render's files: "render", or "render.tile-i-of-n" for band i of n > 1.
+std::string band_stem(int index, int count);
 // Parses "i/n" (0 <= i < n <= frame height); throws InputError naming --tile.
 std::pair<int, int> parse_tile(const std::string& text);
 

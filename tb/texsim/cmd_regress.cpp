@@ -15,7 +15,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "texsim/commands.hpp"
-#include "texsim/regress_bands.hpp"
+#include "texsim/regress_join.hpp"
 #include "texsim/regress_list.hpp"
 #include "texsim/regress_report.hpp"
 #include "texsim/regress_run.hpp"
@@ -54,10 +54,9 @@ int report(const RegressArgs& a, const RegressOptions& o, const std::vector<Regr
               results);
   std::string text = summary(a.list, results, seconds, o.jobs);
   bool merged = true;
-  for (const BandMerge& m : merge_band_groups(o, results)) {
-    text += m.merged() ? fmt::format("\nbands of {} joined: {}\n", m.group, m.image)
-                       : fmt::format("\nbands of {} not joined: {}\n", m.group, m.error);
-    merged = merged && m.merged();
+  for (const GroupJoin& j : join_groups(o, results)) {
+    text += "\n" + j.summary() + "\n";
+    merged = merged && j.joined();
   }
   write_file_atomically((o.out / "summary.txt").string(), text);
   fmt::print("\n{}junit: {}\nsummary: {}\n", text, (o.out / "junit.xml").string(),

@@ -8,6 +8,7 @@
 #include "common/error.hpp"
 #include "common/image.hpp"
 #include "common/oiio_plugin.hpp"
+#include "render/bands.hpp"
 #include "render/flyover.hpp"
 #include "render/render.hpp"
 #include "render/tiles.hpp"
@@ -29,6 +30,7 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
   struct Args {
     std::string scene, engine = "golden", check, compare, tile, frames;
     bool waveform = false, no_progress = false;
+    int bands = 0;
     render::RenderOptions options;
   };
   auto a = std::make_shared<Args>();
@@ -50,6 +52,11 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
       ->check(CLI::IsMember({"ideal"}));
   cmd->add_option("--tile", a->tile,
                   "Render band i of n of the frame (i/n); join the bands with texsim merge");
+  cmd->add_option("--bands", a->bands,
+                  "Render the frame as N bands on parallel threads (--jobs at a time), each band "
+                  "--tile i/N's\nrender with its own models and files, joined into render.png "
+                  "(a surface scene)")
+      ->check(CLI::Range(1, 4096));
   cmd->add_option("--save-trace", a->options.save_trace,
                   "Write the fragment records (a trace) to this file");
   cmd->add_option("--replay", a->options.replay_trace,
@@ -72,8 +79,9 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
       ->capture_default_str();
   a->options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   cmd->add_option("--jobs", a->options.jobs,
-                  "Materials shaded at once, each on its own thread with its own models (the "
-                  "image and report\nare the same for any number; hls runs one at a time)")
+                  "Materials shaded at once, each on its own thread with its own models, or with "
+                  "--bands the bands\nrendered at once (the image and report are the same for "
+                  "any number; hls runs one at a time)")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   cmd->add_flag("--no-progress", a->no_progress, "No progress bar");
@@ -86,6 +94,9 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
     o.waveform = a->waveform;
     o.progress = !a->no_progress;
     if (!a->tile.empty()) std::tie(o.tile, o.tiles) = render::parse_tile(a->tile);
+    if (a->bands > 0 && (host::is_volume_scene(a->scene) || render::is_flyover(a->scene))) {
+      throw InputError(a->scene, "", "--bands is for a surface scene");
+    }
     if (host::is_volume_scene(a->scene)) {
       if (!a->frames.empty()) throw InputError(a->scene, "", "--frames is for a fly-over scene");
       exit_code.value = render::render_volume(a->scene, o, std::cout);
@@ -97,22 +108,14 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
                          "--chips: a fly-over samples its clip-map through the clip-map unit "
                          "(003), not a TEXRAM chip");
       }
-      render::FrameRange range;
-      if (!a->frames.empty()) {
-        const auto dash = a->frames.find('-');
-        try {
-          range.first = std::stoi(a->frames.substr(0, dash));
-          range.last =
-              dash == std::string::npos ? range.first : std::stoi(a->frames.substr(dash + 1));
-        } catch (const std::exception&) {
-          throw InputError("--frames", "", "expected A or A-B, got " + a->frames);
-        }
-      }
+      const render::FrameRange range =
+          a->frames.empty() ? render::FrameRange{} : render::parse_frame_range(a->frames);
       exit_code.value = render::render_flyover(a->scene, o, range, std::cout);
       return;
     }
     if (!a->frames.empty()) throw InputError(a->scene, "", "--frames is for a fly-over scene");
-    exit_code.value = render::render_scene(a->scene, o, std::cout);
+    exit_code.value = a->bands > 0 ? render::render_bands(a->scene, o, a->bands, std::cout)
+                                   : render::render_scene(a->scene, o, std::cout);
   });
 
   auto* merge =

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "render/flyover.hpp"
 
 namespace tmu::texsim {
 namespace {
@@ -39,6 +40,81 @@ std::pair<uint64_t, uint64_t> seed_range(const std::string& text) {
     throw std::invalid_argument("'" + text + "' is not A..B of whole numbers");
   if (first > last) throw std::invalid_argument("'" + text + "' is empty (A > B)");
   return {first, last};
+}
+
+// A count after option w[i]: 1..max; throws InputError naming the option.
+int count_after(const std::vector<std::string>& w, size_t i, int max, const std::string& path,
+                const std::string& where) {
+  size_t end = 0;
+  int n = 0;
+  try {
+    if (i + 1 < w.size()) n = std::stoi(w[i + 1], &end);
+  } catch (const std::exception&) {
+  }
+  if (i + 1 == w.size() || end != w[i + 1].size() || n < 1 || n > max)
+    throw InputError(path, where, fmt::format("{} needs a count 1..{}", w[i], max));
+  return n;
+}
+
+// A render line's tests: one, the bands of --bands N, or a fly-over's frames in ranges of
+// --frames-per-test K.
+template <typename Add>
+void add_render_tests(const fs::path& scene, const std::string& name, std::vector<std::string> w,
+                      const std::string& path, const std::string& where, Add add) {
+  std::vector<std::string> rest;
+  int bands = 0, per_test = 0;
+  std::string frames;
+  for (size_t i = 0; i < w.size(); ++i) {
+    if (w[i] == "--bands") {
+      bands = count_after(w, i++, 256, path, where);
+    } else if (w[i] == "--frames-per-test") {
+      per_test = count_after(w, i++, 1024, path, where);
+    } else if (w[i] == "--frames" && i + 1 < w.size()) {
+      frames = w[++i];
+    } else {
+      rest.push_back(w[i]);
+    }
+  }
+  const auto has = [&](const char* option) {
+    return std::find(rest.begin(), rest.end(), option) != rest.end();
+  };
+  if (bands > 0 && has("--tile"))
+    throw InputError(path, where, "--bands sets each band's --tile: not both");
+  const auto test = [&](const std::string& test_name, Join join) {
+    RegressTest t{
+        test_name, {"render", scene.string()}, "render", join == Join::kNone ? "" : name, join};
+    t.args.insert(t.args.end(), rest.begin(), rest.end());
+    return t;
+  };
+  if (per_test == 0) {
+    if (!frames.empty()) rest.insert(rest.end(), {"--frames", frames});
+    for (int b = 0; b < std::max(bands, 1); ++b) {
+      if (bands == 0) {
+        add(test(name, Join::kNone), where);
+        continue;
+      }
+      RegressTest t = test(name + ".band" + std::to_string(b), Join::kBands);
+      t.args.insert(t.args.end(), {"--tile", fmt::format("{}/{}", b, bands)});
+      add(std::move(t), where);
+    }
+    return;
+  }
+  if (bands > 0) throw InputError(path, where, "--frames-per-test with --bands: one of the two");
+  if (!render::is_flyover(scene.string()))
+    throw InputError(path, where, "--frames-per-test is for a fly-over scene");
+  render::FrameRange range;
+  try {
+    if (!frames.empty()) range = render::parse_frame_range(frames);
+    range = render::frames_of_path(range, render::load_flyover(scene.string(), "").frames());
+  } catch (const InputError& e) {
+    throw InputError(path, where, e.what());
+  }
+  for (int a = range.first; a <= range.last; a += per_test) {
+    const int b = std::min(a + per_test - 1, range.last);
+    RegressTest t = test(fmt::format("{}.frames{}-{}", name, a, b), Join::kFrames);
+    t.args.insert(t.args.end(), {"--frames", fmt::format("{}-{}", a, b)});
+    add(std::move(t), where);
+  }
 }
 
 }  // namespace
@@ -83,7 +159,8 @@ std::vector<RegressTest> read_regress_list(const std::string& path) {
         RegressTest t{"cosim." + w[1] + ".seed" + std::to_string(s),
                       {"cosim", w[1], "--seed", std::to_string(s)},
                       "cosim",
-                      ""};
+                      "",
+                      Join::kNone};
         t.args.insert(t.args.end(), rest.begin(), rest.end());
         add(std::move(t), where);
       }
@@ -93,33 +170,7 @@ std::vector<RegressTest> read_regress_list(const std::string& path) {
       const fs::path scene = fs::path(w[1]).is_absolute() ? fs::path(w[1]) : folder / w[1];
       if (!fs::exists(scene)) throw InputError(path, where, "no scene " + scene.string());
       const std::string name = "render." + scene.stem().string() + "." + std::to_string(number);
-      std::vector<std::string> rest;
-      int bands = 0;
-      for (size_t i = 2; i < w.size(); ++i) {
-        if (w[i] != "--bands") {
-          rest.push_back(w[i]);
-          continue;
-        }
-        size_t end = 0;
-        try {
-          if (i + 1 < w.size()) bands = std::stoi(w[i + 1], &end);
-        } catch (const std::exception&) {
-        }
-        if (i + 1 == w.size() || end != w[i + 1].size() || bands < 1 || bands > 256)
-          throw InputError(path, where, "--bands needs a count 1..256");
-        ++i;
-      }
-      if (bands > 0 && std::find(rest.begin(), rest.end(), "--tile") != rest.end())
-        throw InputError(path, where, "--bands sets each band's --tile: not both");
-      for (int b = 0; b < std::max(bands, 1); ++b) {
-        RegressTest t{bands ? name + ".band" + std::to_string(b) : name,
-                      {"render", scene.string()},
-                      "render",
-                      bands ? name : ""};
-        t.args.insert(t.args.end(), rest.begin(), rest.end());
-        if (bands) t.args.insert(t.args.end(), {"--tile", fmt::format("{}/{}", b, bands)});
-        add(std::move(t), where);
-      }
+      add_render_tests(scene, name, {w.begin() + 2, w.end()}, path, where, add);
     } else {
       throw InputError(path, where, "unknown command '" + w[0] + "' (cosim or render)");
     }
