@@ -388,10 +388,11 @@ void add_sweep_command(CLI::App& app, ExitCode&) {
       a.markdown = args->markdown;
       sweep_nurbs(a);
     } else if (args->block == "volume") {
-      for (const char* o : {"--k", "--requests", "--no-synth"}) {
+      for (const char* o : {"--k", "--requests"}) {
         if (cmd->count(o) > 0) throw CLI::ValidationError(o, "not for `sweep volume`");
       }
       VolumeSweepArgs a;
+      a.synth = args->synth;
       if (cmd->count("--settings") > 0) a.settings = args->settings;
       a.scene = fp->scene;
       a.quick = fp->quick;

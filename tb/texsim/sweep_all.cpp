@@ -121,8 +121,8 @@ const Section kSections[] = {
      "roundings), max and RMS; the frame's PSNR against the ideal frame (both 8-bit; the rows "
      "ideal are the ideal against itself). Cost: accesses and page faults per resample and the "
      "frame's unit time at 30 ns an access (the page model's counts), and the patent's two "
-     "data sets on four chips at that step (below in full). No RTL yet: no cells or depth "
-     "(the block is being built).",
+     "data sets on four chips at that step (below in full). Cells and depth: tmu_volume, one "
+     "netlist for every W (W is a configuration port; its 8-bit blend masks the weights).",
      "volume.md"},
 };
 
@@ -168,6 +168,7 @@ void run_block_sweeps(const SweepAllArgs& args, const fs::path& data) {
   sweep_nurbs(nurbs);
 
   VolumeSweepArgs volume;
+  volume.synth = args.synth;
   volume.markdown = md("volume");
   sweep_volume(volume);
 }
