@@ -132,6 +132,12 @@ int run(const RegressArgs& a) {
   if (a.slurm) {
     if (!submit(a, o, tests.size())) {
       fmt::print(stderr, "texsim regress: {} failed; the results so far are merged\n", a.sbatch);
+      // The usual cause: no configuration, which sbatch reports only as a DNS lookup failure.
+      if (!std::getenv("SLURM_CONF")) {
+        fmt::print(stderr,
+                   "texsim regress: SLURM_CONF is not set; for the single-node Slurm of "
+                   "scripts/slurm_local.sh: export SLURM_CONF=/tmp/tmu_slurm/slurm.conf\n");
+      }
     }
     if (a.no_wait) {
       fmt::print("when the array has run: texsim regress {} --out {} --merge\n", a.list,
