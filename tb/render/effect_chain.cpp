@@ -30,7 +30,6 @@ using glm::dvec3;
 using glm::dvec4;
 using texram::chip::PixelParameter;
 
-constexpr const char* kFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
 constexpr int kCoordValueBits = 10;  // the coordinate tables' W (the RTL's)
 
 // Runs units one after the other and keeps each with the fragments of its outputs.
@@ -107,7 +106,7 @@ std::vector<uint32_t> chip_pass(const ChainInput& in,
     const host::FragmentRecord& r = in.records[in.frags[k]];
     const deflect::MapCoords& c = map_coords[k];
     if (maps.diffuse) params[k].push_back({1, {c.un, c.vn, 0, r.shade}});
-    params[k].push_back({1, {r.u, r.v, r.lambda, r.shade}});
+    params[k].push_back(texture_parameter(mat, r, r.shade));
     if (mat.specular || mat.environment) {
       if (maps.specular || maps.sphere) params[k].push_back({1, {c.un, c.vn, 0, 0}});
     }
@@ -245,8 +244,8 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
         fragments.push_back(frags[k]);
       }
       if (which.empty()) continue;
-      const std::vector<uint32_t> e = runner.sample(std::string("environment") + kFaceNames[face],
-                                                    maps.cube[face], uvl, fragments);
+      const std::vector<uint32_t> e = runner.sample(
+          std::string("environment") + kCubeFaceNames[face], maps.cube[face], uvl, fragments);
       for (size_t j = 0; j < which.size(); ++j) specular[which[j]] = e[j];
     }
   }

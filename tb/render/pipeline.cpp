@@ -18,6 +18,7 @@
 #include "common/image.hpp"
 #include "footprint/footprint_ideal.hpp"
 #include "render/chip_stage.hpp"
+#include "render/detail_maps.hpp"
 #include "render/effect_chain.hpp"
 #include "render/jobs.hpp"
 #include "render/procedural_chain.hpp"
@@ -133,6 +134,31 @@ Pipeline::Pipeline(const host::Scene& scene, Level level, int chips)
       throw InputError(scene.path, field, e.what());
     }
     if (mat.uses_normal()) mt.effects = build_effect_maps(scene, mat);
+    if (mat.has_detail()) {
+      // Only the chip has the detail path (its offsets and detail DRFs); the separate units and
+      // the ideal chain have none, so a detail scene renders on chips or not at all.
+      const std::string at =
+          "materials." + mat.name + (mat.detail ? ".detail" : ".reflectance.detail");
+      if (level == Level::kIdeal) {
+        throw InputError(scene.path, at,
+                         "the ideal renderer has no model of a detail map in a material's chain "
+                         "(the ideal detail sample is checked on its own: tmu_detail_tests, "
+                         "docs/detail.md); no --engine ideal or --compare ideal");
+      }
+      if (chips <= 0) {
+        throw InputError(scene.path, at,
+                         "detail maps are sampled by the TEXRAM chip only: render with --chips N");
+      }
+      try {
+        if (mat.detail) mt.detail = build_detail_map(*mat.detail, mt.size);
+        if (mat.reflectance.detail)
+          mt.reflectance_detail = build_detail_map(*mat.reflectance.detail, mt.size);
+      } catch (const InputError& e) {
+        throw InputError(scene.path, at, e.what());
+      } catch (const std::invalid_argument& e) {
+        throw InputError(scene.path, at, e.what());
+      }
+    }
     textures_.push_back(std::move(mt));
   }
   if (chips > 0 && level != Level::kIdeal) {
@@ -315,8 +341,7 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
              : std::vector<host::FragmentRecord>{};
       const std::vector<host::FragmentRecord>& at = pc ? tau : records;
       std::vector<std::vector<texram::chip::PixelParameter>> params;
-      for (size_t i : frags)
-        params.push_back({{1, {at[i].u, at[i].v, at[i].lambda, records[i].shade}}});
+      for (size_t i : frags) params.push_back({texture_parameter(mat, at[i], records[i].shade)});
       const std::vector<uint32_t> rgba =
           chip->run_pass(m, 0, std::move(params), frags, level_, w.units, w.outputs_of);
       for (size_t k = 0; k < frags.size(); ++k) out[frags[k]] = rgba[k];
