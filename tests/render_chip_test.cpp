@@ -224,7 +224,8 @@ TEST(RenderChipTest, EveryBundledChainGivesTheSameColoursOnTheChip) {
     std::cout << "  " << checked << " fragments through the chip\n";
   }
   std::cout << on_chip << " materials through the chips in the renderer\n";
-  EXPECT_GE(on_chip, 34u);  // 34 when written: fewer means a chain fell off the chips
+  // 34 when written, 37 with the footprint materials: fewer means a chain fell off the chips.
+  EXPECT_GE(on_chip, 37u);
 }
 
 }  // namespace
