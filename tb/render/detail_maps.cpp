@@ -15,15 +15,35 @@ texram::Level8 tiled_offsets(glm::ivec2 size, bool v) {
   return o;
 }
 
+namespace {
+
+struct Offsets {
+  texram::Level8 u, v;
+};
+
+Offsets offsets_of(const host::Detail& detail, glm::ivec2 size) {
+  if (detail.offsets == host::Detail::Offsets::kTiled)
+    return {tiled_offsets(size, false), tiled_offsets(size, true)};
+  return {texram::plane_of(source_image(detail.offset_u), texram::luma),
+          texram::plane_of(source_image(detail.offset_v), texram::luma)};
+}
+
+}  // namespace
+
+std::shared_ptr<const texram::IdealDetailMap> build_ideal_detail_map(const host::Detail& detail,
+                                                                     glm::ivec2 size) {
+  const texram::TexramTexture map = texram::import_image(source_image(detail.map), detail.kind);
+  const Offsets o = offsets_of(detail, size);
+  return std::make_shared<const texram::IdealDetailMap>(
+      texram::ideal_detail_map(map.source, o.u, o.v));
+}
+
 std::shared_ptr<const texram::DetailMap> build_detail_map(const host::Detail& detail,
                                                           glm::ivec2 size) {
   texram::TexramTexture map = texram::import_image(source_image(detail.map), detail.kind);
-  const bool tiled = detail.offsets == host::Detail::Offsets::kTiled;
-  const texram::Level8 u = tiled ? tiled_offsets(size, false)
-                                 : texram::plane_of(source_image(detail.offset_u), texram::luma);
-  const texram::Level8 v = tiled ? tiled_offsets(size, true)
-                                 : texram::plane_of(source_image(detail.offset_v), texram::luma);
-  return std::make_shared<const texram::DetailMap>(texram::make_detail_map(std::move(map), u, v));
+  const Offsets o = offsets_of(detail, size);
+  return std::make_shared<const texram::DetailMap>(
+      texram::make_detail_map(std::move(map), o.u, o.v));
 }
 
 }  // namespace tmu::render

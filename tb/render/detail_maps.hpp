@@ -8,6 +8,7 @@
 
 #include "scene/scene.hpp"
 #include "texram/detail.hpp"
+#include "texram/detail_ideal.hpp"
 
 namespace tmu::render {
 
@@ -15,6 +16,11 @@ namespace tmu::render {
 // unreadable image and std::invalid_argument for a map make_detail_map refuses.
 std::shared_ptr<const texram::DetailMap> build_detail_map(const host::Detail& detail,
                                                           glm::ivec2 size);
+
+// The same detail map for the ideal renderer: the detail map's source texels (its exact pyramid)
+// and the offsets as given.
+std::shared_ptr<const texram::IdealDetailMap> build_ideal_detail_map(const host::Detail& detail,
+                                                                     glm::ivec2 size);
 
 // The tiled offsets: texel (x, y)'s region at (16 x mod 256, 16 y mod 256).
 texram::Level8 tiled_offsets(glm::ivec2 size, bool v);

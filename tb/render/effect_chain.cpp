@@ -303,6 +303,17 @@ std::vector<dvec4> ideal_effect_chain(const ChainInput& in,
     const double side = double(1 << map.log2_side);
     return sample(map, (c.un + 1) / 2 * side, (1 - c.vn) / 2 * side, 0);
   };
+  // R: the reflectance map at the texture's (u, v, lambda), through its detail map when it has
+  // one (the detail sample's exact rules, texram/detail_ideal).
+  const auto reflectance = [&](const host::Fragment& f) {
+    const texram::IdealDetailMap* detail = in.texture.ideal_reflectance_detail.get();
+    if (!detail) return sample(maps.reflectance, f.uv.x, f.uv.y, f.lambda);
+    const auto combine = mat.reflectance.detail->modulate ? texram::DetailCombine::kModulate
+                                                          : texram::DetailCombine::kReplace;
+    const auto s = texram::ideal_detail_sample(*maps.reflectance.ideal, maps.reflectance.sampler,
+                                               *detail, combine, f.uv.x, f.uv.y, f.lambda);
+    return dvec4(s[0], s[1], s[2], s[3]);
+  };
   texram::SamplerConfig unshaded = mat.sampler;
   if (unshaded.combine == texram::Combine::kShade) unshaded.combine = texram::Combine::kOne;
 
@@ -332,8 +343,7 @@ std::vector<dvec4> ideal_effect_chain(const ChainInput& in,
         const deflect::CubeIdeal a = deflect::cube_address_ideal(c.ur, c.vr, c.wr, face_log2);
         e = sample(maps.cube[a.face], a.u, a.v, 0);
       }
-      const dvec3 r = maps.reflectance ? dvec3(sample(maps.reflectance, f.uv.x, f.uv.y, f.lambda))
-                                       : 255.0 * mat.reflectance.constant;
+      const dvec3 r = maps.reflectance ? dvec3(reflectance(f)) : 255.0 * mat.reflectance.constant;
       for (int ch = 0; ch < 3; ++ch) colour[ch] = std::min(255.0, colour[ch] + e[ch] * r[ch] / 255);
     }
     out.push_back(colour);
