@@ -32,9 +32,20 @@ for scene in "${scenes[@]}"; do
   volume=false
   # A volume scene (docs/volume.md): ideal, and golden against it; its --chips are slabs (below).
   grep -q '"volume"' "$scene" && volume=true && runs=("ideal" "golden --compare ideal") && chips=()
+  # Footprint materials on the chips: one step in flight makes the full frame about 30 s at rtl,
+  # so the check here runs on a copy at half the resolution (images resolved against the scene's
+  # folder); render_chips_full_NAME (label long) runs the full frame.
+  chip_scene=$scene
+  if grep -q '"footprint"' "$scene" && [[ ${TMU_CHIPS_FULL:-0} != 1 ]]; then
+    chip_scene="$work/$name-half.json"
+    perl -pe 's{"resolution": \[(\d+), (\d+)\]}{sprintf(q("resolution": [%d, %d]), $1 / 2, $2 / 2)}e;
+      s{"images/}{"'"$root"'/scenes/images/}g' "$scene" >"$chip_scene"
+  fi
   for run in "${runs[@]}" ${chips[@]+"${chips[@]}"}; do
+    at=$scene
+    [[ $run == "${chips[0]:-}" ]] && at=$chip_scene
     # shellcheck disable=SC2086
-    if out=$("$texsim" render "$scene" --engine $run --out "$work/$name" --no-progress 2>&1); then
+    if out=$("$texsim" render "$at" --engine $run --out "$work/$name" --no-progress 2>&1); then
       verdict=$(grep -oE "MATCH[^,]*|MISMATCH[^,]*" <<<"$out" | head -1)
       on_chips=""
       [[ $run == "${chips[0]:-}" ]] && ! grep -qE "^    .*: chip [0-9]+, DRF" <<<"$out" &&
