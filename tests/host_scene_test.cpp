@@ -339,13 +339,88 @@ TEST(HostSceneTest, FootprintParsesWithDefaultsAndChecksItsFields) {
   expect_error(j, "materials.label.footprint", "");
 }
 
-TEST(HostSceneTest, ReservedEffectsAreNotImplementedYet) {
-  for (const char* effect : {"detail"}) {
+TEST(HostSceneTest, DetailKeysParseWithDefaults) {
+  Json j = base_scene();
+  j["materials"]["floor"]["detail"] = {{"map", {{"pattern", "noise"}}}};
+  j["materials"]["label"]["detail"] = {
+      {"map", {{"pattern", "smooth"}, {"size", {256, 16}}}},
+      {"offsets", {{"u", {{"pattern", "noise"}}}, {"v", {{"pattern", "gradient"}}}}},
+      {"combine", "replace"},
+      {"config", "rgba"}};
+  j["materials"]["label"]["environment"] = {{"map", "sphere"}};
+  j["materials"]["label"]["reflectance"] = {{"map", {{"pattern", "noise"}}},
+                                            {"detail", {{"map", {{"pattern", "checker"}}}}}};
+  const Scene s = parse(j);
+  const Material& floor = s.materials[0];
+  ASSERT_TRUE(floor.detail);
+  EXPECT_TRUE(floor.has_detail());
+  EXPECT_EQ(floor.detail->map.width, 64);  // a pattern's default: four regions a side
+  EXPECT_EQ(floor.detail->map.height, 64);
+  EXPECT_EQ(floor.detail->kind, texram::TexelKind::kLuminance);
+  EXPECT_EQ(floor.detail->offsets, Detail::Offsets::kTiled);
+  EXPECT_TRUE(floor.detail->modulate);
+  EXPECT_FALSE(floor.reflectance.detail);
+  const Material& label = s.materials[1];
+  ASSERT_TRUE(label.detail);
+  EXPECT_EQ(label.detail->map.width, 256);
+  EXPECT_EQ(label.detail->map.height, 16);
+  EXPECT_EQ(label.detail->kind, texram::TexelKind::kTrueColour);
+  EXPECT_FALSE(label.detail->modulate);
+  EXPECT_EQ(label.detail->offsets, Detail::Offsets::kImages);
+  EXPECT_EQ(label.detail->offset_u.width, 128);  // the texture's size
+  EXPECT_EQ(label.detail->offset_v.height, 32);
+  ASSERT_TRUE(label.reflectance.detail);
+  EXPECT_EQ(label.reflectance.detail->map.pattern, "checker");
+}
+
+TEST(HostSceneTest, DetailKeyErrorsNameTheFieldAndTheReason) {
+  const auto with = [](const Json& detail) {
     Json j = base_scene();
-    j["materials"]["label"][effect] = Json::object();
-    expect_error(j, std::string("materials.label.") + effect,
-                 std::string("the ") + effect + " effect is not implemented yet");
-  }
+    j["materials"]["label"]["detail"] = detail;
+    return j;
+  };
+  const std::string at = "materials.label.detail";
+  expect_error(with(Json::object()), at + ".map", "missing required key");
+  expect_error(with(8), at, "expected an object");
+  expect_error(with({{"map", {{"pattern", "noise"}}}, {"scale", 2}}), at + ".scale", "unknown key");
+  expect_error(with({{"map", {{"pattern", "noise"}, {"size", {8, 8}}}}}), at + ".map.size",
+               "powers of two from 16 (one region) to 256");
+  expect_error(with({{"map", {{"pattern", "noise"}, {"size", {512, 16}}}}}), at + ".map.size",
+               "it is 512x16");
+  expect_error(with({{"map", {{"pattern", "noise"}, {"size", {48, 16}}}}}), at + ".map.size",
+               "powers of two");
+  expect_error(with({{"map", {{"pattern", "noise"}}}, {"combine", "add"}}), at + ".combine",
+               "modulate");
+  expect_error(with({{"map", {{"pattern", "noise"}}}, {"config", "index"}}), at + ".config",
+               "luminance");
+  expect_error(with({{"map", {{"pattern", "noise"}}}, {"offsets", "random"}}), at + ".offsets",
+               "tiled");
+  expect_error(
+      with({{"map", {{"pattern", "noise"}}}, {"offsets", {{"u", {{"pattern", "noise"}}}}}}),
+      at + ".offsets.v", "missing required key");
+  expect_error(
+      with({{"map", {{"pattern", "noise"}}},
+            {"offsets",
+             {{"u", {{"pattern", "noise"}, {"size", {64, 64}}}}, {"v", {{"pattern", "noise"}}}}}}),
+      at + ".offsets.u.size", "128x32 (it is 64x64)");
+  expect_error(with({{"map", {{"pattern", "noise"}}}, {"offsets", {{"w", 1}}}}), at + ".offsets.w",
+               "unknown key");
+  // Materials the chip cannot take: no other unit samples a detail map.
+  Json j = with({{"map", {{"pattern", "noise"}}}});
+  j["materials"]["label"]["mipmaps"] = "mipgen";
+  expect_error(j, at, "mipmap generator");
+  j = with({{"map", {{"pattern", "noise"}}}});
+  j["materials"]["label"]["config"] = "ccc";
+  j["materials"]["label"]["unit"] = "lowcost";
+  expect_error(j, at, "not unit lowcost");
+  // A reflectance's detail needs a reflectance map.
+  j = base_scene();
+  j["materials"]["label"]["environment"] = {{"map", "sphere"}};
+  j["materials"]["label"]["reflectance"] = {{"detail", {{"map", {{"pattern", "noise"}}}}}};
+  expect_error(j, "materials.label.reflectance.map", "missing required key");
+  j["materials"]["label"]["reflectance"] = {
+      {"map", {{"pattern", "noise"}}}, {"detail", {{"map", {{"pattern", "noise"}, {"size", 4}}}}}};
+  expect_error(j, "materials.label.reflectance.detail.map.size", "expected a list");
 }
 
 TEST(HostSceneTest, DeflectionEffectsParseWithDefaults) {

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -212,12 +213,19 @@ TEST(RenderChipTest, EveryBundledChainGivesTheSameColoursOnTheChip) {
     if (j.contains("flyover")) continue;  // a clip-map fly-over (003)
     if (j.contains("volume")) continue;   // a volume scene (000 §13): no maps, no DRFs
     SCOPED_TRACE(entry.path().filename().string());
+    const host::Scene scene = host::load_scene(entry.path().string());
+    // Detail maps: only the chip samples them, there are no separate units to compare with
+    // (render_scene_detail checks that scene rtl = golden on the chips).
+    if (std::any_of(scene.materials.begin(), scene.materials.end(),
+                    [](const host::Material& m) { return m.has_detail(); }))
+      continue;
     std::cout << entry.path().filename().string() << ":\n";
-    const size_t checked = check_scene(host::load_scene(entry.path().string()), on_chip);
+    const size_t checked = check_scene(scene, on_chip);
     std::cout << "  " << checked << " fragments through the chip\n";
   }
   std::cout << on_chip << " materials through the chips in the renderer\n";
-  EXPECT_GE(on_chip, 34u);  // 34 when written: fewer means a chain fell off the chips
+  // 34 when written, 37 with the footprint materials: fewer means a chain fell off the chips.
+  EXPECT_GE(on_chip, 37u);
 }
 
 }  // namespace

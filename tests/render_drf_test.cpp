@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 using texram::chip::DrfOp;
 
 ScenePrograms compile(const host::Scene& scene, int chips) {
-  const Pipeline pipe(scene, Level::kGolden);
+  const Pipeline pipe(scene, Level::kGolden, chips);
   return compile_drfs(scene, pipe.textures(), chips);
 }
 
@@ -60,7 +60,7 @@ TEST(RenderDrfTest, EveryBundledSceneCompilesWithItsMapsApart) {
     if (j.contains("flyover")) continue;  // a clip-map fly-over (003)
     if (j.contains("volume")) continue;   // a volume scene (000 §13): no maps, no DRFs
     const host::Scene scene = host::load_scene(entry.path().string());
-    const Pipeline pipe(scene, Level::kGolden);
+    const Pipeline pipe(scene, Level::kGolden, 4);  // 4: a detail scene needs chips
     const ScenePrograms p = compile_drfs(scene, pipe.textures(), 4);
     ASSERT_EQ(p.materials.size(), scene.materials.size());
     for (const ChipProgram& chip : p.chips) {
@@ -117,6 +117,47 @@ TEST(RenderDrfTest, EveryBundledSceneCompilesWithItsMapsApart) {
                 })));
     }
   }
+}
+
+// scenes/detail.json: the texture's and the reflectance map's detail maps are each an offsets
+// DRF (both offset maps, v right after u where the chip reads it) and a detail DRF after the
+// map's own; the extreme chain takes all seven DRFs, so the two materials take two chips.
+TEST(RenderDrfTest, DetailMapsCompileToOffsetsAndDetailDrfs) {
+  const host::Scene scene = host::load_scene(std::string(TMU_SOURCE_DIR) + "/scenes/detail.json");
+  const ScenePrograms p = compile(scene, 4);
+  ASSERT_EQ(p.materials.size(), 2u);
+  const std::vector<DrfOp> plain = {DrfOp::kTexture, DrfOp::kOffsets, DrfOp::kDetail};
+  const std::vector<DrfOp> extreme = {DrfOp::kTexture,     DrfOp::kOffsets, DrfOp::kDetail,
+                                      DrfOp::kReflectance, DrfOp::kOffsets, DrfOp::kDetail,
+                                      DrfOp::kEnvironment};
+  for (size_t m = 0; m < 2; ++m) {
+    const MaterialProgram& prog = p.materials[m];
+    SCOPED_TRACE(scene.materials[m].name);
+    ASSERT_GE(prog.chip, 0) << prog.why;
+    EXPECT_EQ(prog.chip, static_cast<int>(m));  // the extreme chain does not fit beside another
+    const ChipProgram& chip = p.chips[static_cast<size_t>(prog.chip)];
+    std::vector<DrfOp> ops;
+    for (int n : prog.drfs) ops.push_back(chip.drfs[static_cast<size_t>(n - 1)].op);
+    EXPECT_EQ(ops, m == 0 ? plain : extreme);
+    for (size_t k = 0; k < prog.drfs.size(); ++k) {
+      const texram::chip::Drf& d = chip.drfs[static_cast<size_t>(prog.drfs[k] - 1)];
+      if (d.op == DrfOp::kTexture || d.op == DrfOp::kReflectance) {
+        const host::Detail& want = d.op == DrfOp::kTexture ? *scene.materials[m].detail
+                                                           : *scene.materials[m].reflectance.detail;
+        EXPECT_TRUE(d.detail);
+        EXPECT_EQ(d.detail_combine == texram::DetailCombine::kModulate, want.modulate);
+      }
+      if (d.op != DrfOp::kOffsets) continue;
+      std::vector<uint32_t> bases;  // the offsets DRF's two maps
+      for (const ChipMap& c : chip.maps)
+        if (c.drf == prog.drfs[k]) bases.push_back(c.base);
+      ASSERT_EQ(bases.size(), 2u);
+      EXPECT_EQ(bases[0], d.base);
+      EXPECT_EQ(bases[1], texram::chip::offsets_v_base(d));
+    }
+  }
+  // On one chip the second material finds no DRF left: a clear error.
+  expect_error(scene, 1, "materials.lacquer", "4 DRFs left, 7 needed");
 }
 
 TEST(RenderDrfTest, AChipFullOfDrfsPassesTheNextMaterialOn) {

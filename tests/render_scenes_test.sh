@@ -24,12 +24,28 @@ for scene in "${scenes[@]}"; do
   # units.
   chips=("rtl --check golden --chips 4")
   grep -q '"flyover"' "$scene" && chips=()  # the clip-map unit's (003), not the TEXRAM's
+  # A detail scene (docs/detail.md): only the chip samples detail maps, so hls and rtl run on the
+  # chips, each checked bit for bit against golden on the same chips (ideal has its own exact
+  # detail sample); without --chips it is refused (exit 2, the field named, no output).
+  detail=false
+  grep -q '"detail"' "$scene" && detail=true && runs=("ideal" "hls --check golden --chips 4")
   volume=false
   # A volume scene (docs/volume.md): ideal, and golden against it; its --chips are slabs (below).
   grep -q '"volume"' "$scene" && volume=true && runs=("ideal" "golden --compare ideal") && chips=()
+  # Footprint materials on the chips: one step in flight makes the full frame about 30 s at rtl,
+  # so the check here runs on a copy at half the resolution (images resolved against the scene's
+  # folder); render_chips_full_NAME (label long) runs the full frame.
+  chip_scene=$scene
+  if grep -q '"footprint"' "$scene" && [[ ${TMU_CHIPS_FULL:-0} != 1 ]]; then
+    chip_scene="$work/$name-half.json"
+    perl -pe 's{"resolution": \[(\d+), (\d+)\]}{sprintf(q("resolution": [%d, %d]), $1 / 2, $2 / 2)}e;
+      s{"images/}{"'"$root"'/scenes/images/}g' "$scene" >"$chip_scene"
+  fi
   for run in "${runs[@]}" ${chips[@]+"${chips[@]}"}; do
+    at=$scene
+    [[ $run == "${chips[0]:-}" ]] && at=$chip_scene
     # shellcheck disable=SC2086
-    if out=$("$texsim" render "$scene" --engine $run --out "$work/$name" --no-progress 2>&1); then
+    if out=$("$texsim" render "$at" --engine $run --out "$work/$name" --no-progress 2>&1); then
       verdict=$(grep -oE "MATCH[^,]*|MISMATCH[^,]*" <<<"$out" | head -1)
       on_chips=""
       [[ $run == "${chips[0]:-}" ]] && ! grep -qE "^    .*: chip [0-9]+, DRF" <<<"$out" &&
@@ -40,6 +56,20 @@ for scene in "${scenes[@]}"; do
       failures=$((failures + 1))
     fi
   done
+  if $detail; then
+    for refused_run in "rtl --check golden|render with --chips N" "golden|render with --chips N"; do
+      run=${refused_run%%|*} why=${refused_run#*|} refused="$work/$name-refused"
+      # shellcheck disable=SC2086
+      out=$("$texsim" render "$scene" --engine $run --out "$refused" --no-progress 2>&1)
+      code=$?
+      if [[ $code -eq 2 && $out == *"materials."*".detail: "*"$why"* && ! -e $refused ]]; then
+        echo "ok   $name: $run refused (exit 2, no output): $why"
+      else
+        echo "FAIL $name: $run: exit $code: $out"
+        failures=$((failures + 1))
+      fi
+    done
+  fi
   if $volume; then
     chips="$work/$name-chips"
     if "$texsim" render "$scene" --engine golden --chips 4 --out "$chips" --no-progress >/dev/null &&

@@ -89,8 +89,10 @@ Reflectance parse_reflectance(const JsonNode& node, const std::string& folder,
     r.constant = node.colour3(0, 1);
   } else {
     node.expect_object();
-    node.allow_keys({"map"});
+    node.allow_keys({"map", "detail"});
     r.map = parse_linked_map(node.at("map"), folder, material);
+    if (auto d = node.find("detail"))
+      r.detail = parse_detail(*d, folder, {material.texture.width, material.texture.height});
   }
   return r;
 }

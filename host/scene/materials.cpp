@@ -16,9 +16,6 @@
 namespace tmu::host {
 namespace {
 
-// Material keys reserved for the blocks that do not exist yet.
-constexpr std::string_view kReservedEffects[] = {"detail"};
-
 // The TEXRAM holds power-of-two sides up to 2^10 (000 §2, formats.def MaxMipLog2); the CCC
 // low-cost unit reads level 0 only and takes any side a TexSize holds.
 constexpr int kMaxTexramSide = 1 << formats::kMaxMipLog2;
@@ -142,10 +139,6 @@ footprint::Config parse_footprint(const JsonNode& node) {
 
 Material parse_material(const JsonNode& node, const std::string& name, const std::string& folder) {
   node.expect_object();
-  for (std::string_view effect : kReservedEffects) {
-    if (auto e = node.find(effect))
-      e->fail(fmt::format("the {} effect is not implemented yet", effect));
-  }
   Material m;
   m.name = name;
   if (auto p = node.find("procedural")) {
@@ -159,27 +152,17 @@ Material parse_material(const JsonNode& node, const std::string& name, const std
     m.texture.width = m.texture.height = 1;
     return m;
   }
-  node.allow_keys({"texture",
-                   "config",
-                   "channel",
-                   "filter",
-                   "border",
-                   "border_colour",
-                   "combine",
-                   "constant",
-                   "unit",
-                   "mipmaps",
-                   "footprint",
-                   "shading",
-                   "shading_map_size",
-                   "bump",
-                   "specular",
-                   "environment",
-                   "reflectance",
-                   "procedural",
-                   "tau",
-                   "order",
-                   "lod"});
+  node.allow_keys({"texture",     "config",
+                   "channel",     "filter",
+                   "border",      "border_colour",
+                   "combine",     "constant",
+                   "unit",        "mipmaps",
+                   "footprint",   "detail",
+                   "shading",     "shading_map_size",
+                   "bump",        "specular",
+                   "environment", "reflectance",
+                   "procedural",  "tau",
+                   "order",       "lod"});
   m.texture = parse_texture(node.at("texture"), folder);
   const bool ccc_file = m.texture.kind == TextureSource::Kind::kCcc;
 
@@ -245,6 +228,20 @@ Material parse_material(const JsonNode& node, const std::string& name, const std
 
   parse_effects(node, folder, m);
   parse_tau(node, m);
+  if (auto d = node.find("detail")) {
+    if (m.unit == Material::Unit::kLowcost)
+      d->fail("a detail map is the TEXRAM's (not unit lowcost)");
+    m.detail = parse_detail(*d, folder, {m.texture.width, m.texture.height});
+  }
+  if (m.has_detail()) {  // only the chip samples detail maps: the material must go to one
+    const JsonNode d = node.has("detail") ? node.at("detail") : node.at("reflectance").at("detail");
+    if (m.mipmaps == Material::Mipmaps::kMipgen)
+      d.fail(
+          "the chip samples detail maps, and the mipmap generator does not write a chip's "
+          "memory yet (mipmaps host)");
+    if (m.order == Material::Order::kTexture || m.order == Material::Order::kComposed)
+      d.fail("orders texture and composed sample at the vertices, not through the chip");
+  }
 
   // Sides: what the unit that samples the texture can hold.
   const JsonNode texture = node.at("texture");

@@ -65,11 +65,27 @@ struct Environment {
   std::string image;  // sphere only: a mirror-ball picture, resolved path; empty: the room
 };
 
+// A detail map (000 §9, docs/detail.md) of a texture or reflectance map: below level 0 the map
+// continues into `map`'s levels -1..-4, each level-0 texel pointing at a 16 x 16 region of it
+// through two offset maps. Only the TEXRAM chip samples it (texsim render --chips N).
+struct Detail {
+  TextureSource map;                                       // sides powers of two, 16..256
+  texram::TexelKind kind = texram::TexelKind::kLuminance;  // "config": luminance or rgba
+  // The regions: kTiled, texel (x, y) at (16 x mod 256, 16 y mod 256) (a detail map seamless
+  // across its regions then reads as one image); kImages, the offset maps' luminance
+  // (offset_u, offset_v: the textured map's size).
+  enum class Offsets { kTiled, kImages };
+  Offsets offsets = Offsets::kTiled;
+  TextureSource offset_u, offset_v;
+  bool modulate = true;  // "combine": modulate (default) or replace
+};
+
 // R of 000 eq. 6-7: the register k_s, or a reflectance map k_s(u, v) read at the texture's
-// (u, v).
+// (u, v), optionally with its own detail map.
 struct Reflectance {
   glm::dvec3 constant{1};
   std::optional<TextureSource> map;
+  std::optional<Detail> detail;
 };
 
 // A procedural material (002 §4.2): the material unit computes the colour from the solid
@@ -99,6 +115,7 @@ struct Material {
   Mipmaps mipmaps = Mipmaps::kHost;
   // Footprint assembly (000 §10) in front of the trilinear unit; absent: isotropic sampling.
   std::optional<footprint::Config> footprint;
+  std::optional<Detail> detail;  // the texture's detail map
   // Per-pixel shading (001 §2.3, §5): the diffuse shading map (and the specular one) read at
   // the coordinates the (bump-deflected) normal gives, instead of the vertex shade I_d.
   enum class Shading { kVertex, kMaps };
@@ -126,6 +143,7 @@ struct Material {
   enum class Lod { kPixel, kTc };
   Lod lod = Lod::kPixel;
   // The deflection chain (normal encoder, coordinate generator, ...) is built for this material.
+  bool has_detail() const { return detail || reflectance.detail; }
   bool uses_normal() const { return shading == Shading::kMaps || environment.has_value(); }
 };
 

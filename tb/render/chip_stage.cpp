@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "common/error.hpp"
 #include "texram/chip/drf.hpp"
 
 namespace tmu::render {
@@ -18,10 +19,6 @@ std::string why_not_on_chip(const host::Material& mat, const MaterialTexture& te
   if (samples_at_vertices(mat)) {
     return "orders texture and composed sample at the vertices (the material's texture unit)";
   }
-  if (mat.footprint) {
-    return "footprint assembly: the renderer does not send r1, r2 to the chip yet "
-           "(docs/texram_chip.md)";
-  }
   if (mat.mipmaps == host::Material::Mipmaps::kMipgen || tex.mipgen_pending) {
     return "the mipmap generator writes its own unit's banks, not a chip's memory yet";
   }
@@ -35,7 +32,13 @@ ChipStage::ChipStage(const host::Scene& scene, const std::vector<MaterialTexture
     : scene_(scene), programs_(compile_drfs(scene, textures, chips)) {
   memories_.resize(programs_.chips.size());
   for (size_t m = 0; m < scene.materials.size(); ++m) {
-    why_not_.push_back(why_not_on_chip(scene.materials[m], textures[m], programs_.materials[m]));
+    const host::Material& mat = scene.materials[m];
+    why_not_.push_back(why_not_on_chip(mat, textures[m], programs_.materials[m]));
+    if (mat.has_detail() && !why_not_.back().empty()) {  // no other unit has a detail path
+      throw InputError(scene.path, "materials." + mat.name,
+                       "has a detail map, which only the chip samples, but cannot go to a chip: " +
+                           why_not_.back());
+    }
   }
 }
 
@@ -95,6 +98,18 @@ std::vector<uint32_t> ChipStage::run_pass(
   units.push_back(std::move(unit));
   outputs_of.push_back(std::move(fragment_of_output));
   return colour;
+}
+
+texram::chip::PixelParameter texture_parameter(const host::Material& mat,
+                                               const host::FragmentRecord& at, uint32_t shade) {
+  texram::chip::PixelParameter p{1, {at.u, at.v, at.lambda, shade}};
+  if (mat.footprint) {
+    p.r1u = at.r1[0];
+    p.r1v = at.r1[1];
+    p.r2u = at.r2[0];
+    p.r2v = at.r2[1];
+  }
+  return p;
 }
 
 std::vector<std::string> chip_lines(const host::Scene& scene, const ChipStage& chips) {

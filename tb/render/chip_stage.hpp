@@ -50,6 +50,13 @@ class ChipStage {
   std::mutex memories_mutex_;  // materials shade on several threads (Pipeline::set_jobs)
 };
 
+// The parameter transaction of material `mat`'s texture DRF for the fragment whose texture
+// coordinates are `at` (the raster's record, or the tau unit's in order pc): (u, v, lambda) and
+// the shade I_d, and with footprint assembly its r1, r2 (the chip's marcher then finds lambda
+// itself). One place for the plain pass and the effect chain's, so neither forgets r1, r2.
+texram::chip::PixelParameter texture_parameter(const host::Material& mat,
+                                               const host::FragmentRecord& at, uint32_t shade);
+
 // For the report, per material of `scene`: "NAME: chip C, DRF 1 | 2 -> 3" (a pass ends at "|"),
 // or "NAME: separate units: why".
 std::vector<std::string> chip_lines(const host::Scene& scene, const ChipStage& chips);

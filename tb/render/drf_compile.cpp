@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 #include "common/error.hpp"
 #include "texram/chip/chip_memory.hpp"
+#include "texram/detail.hpp"
 #include "texram/page_model.hpp"
 
 namespace tmu::render {
@@ -16,8 +18,6 @@ namespace {
 using texram::chip::DrfOp;
 using texram::chip::kCubeDrf;
 using texram::chip::kDrfs;
-
-constexpr const char* kFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
 
 // One DRF of a material's chain before placement.
 struct Step {
@@ -29,6 +29,10 @@ struct Step {
   std::string parameter;  // what its parameter transaction carries (takes_coords or the lead)
   std::array<std::shared_ptr<const texram::TexramTexture>, 6> faces{};  // a cube map
   std::optional<footprint::Config> footprint;                           // the texture's
+  // A texture or reflectance step with a detail map: its offsets and detail steps follow it.
+  std::shared_ptr<const texram::DetailMap> detail;
+  bool modulate = false;
+  std::shared_ptr<const texram::TexramTexture> offset_v;  // an offsets step's v map
 };
 
 bool needs_clut(const texram::TexramTexture& t) {
@@ -36,6 +40,40 @@ bool needs_clut(const texram::TexramTexture& t) {
 }
 
 using texram::page_up;
+
+// `s`, and when it has a detail map its offsets step (both offset maps) and detail step, which
+// the chip visits within s's sample (000 §9: "linked to the u, v-offset map finally pointing to
+// the texture detail map").
+void push_with_detail(std::vector<Step>& steps, const Step& s) {
+  steps.push_back(s);
+  if (!s.detail) return;
+  const texram::DetailMap& d = *s.detail;
+  const std::string role = s.role.empty() ? "" : s.role + ".";
+  Step offsets{role + "detail-offsets",
+               std::make_shared<const texram::TexramTexture>(d.offset_u),
+               texram::offset_sampler(s.sampler),
+               DrfOp::kOffsets,
+               false,
+               "",
+               {},
+               std::nullopt,
+               {},
+               false,
+               std::make_shared<const texram::TexramTexture>(d.offset_v)};
+  Step detail{role + "detail",
+              std::make_shared<const texram::TexramTexture>(d.detail),
+              texram::detail_sampler(d, s.sampler),
+              DrfOp::kDetail,
+              false,
+              "",
+              {},
+              std::nullopt,
+              {},
+              false,
+              {}};
+  steps.push_back(offsets);
+  steps.push_back(detail);
+}
 
 // The chain of `mat` in effect_chain's order, or the reason it has none.
 std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex,
@@ -52,7 +90,7 @@ std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex
   std::vector<Step> steps;
   const auto map_step = [](const std::string& role, const MapTexture& m, DrfOp op, bool takes,
                            const std::string& parameter, texram::Addressing addressing) {
-    Step s{role, m.texture, m.sampler, op, takes, parameter, {}, std::nullopt};
+    Step s{role, m.texture, m.sampler, op, takes, parameter, {}, std::nullopt, {}, false, {}};
     s.sampler.addressing = addressing;
     return s;
   };
@@ -65,12 +103,17 @@ std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex
                              texram::Addressing::kSphere));
   }
   const std::string coords = mat.footprint ? "(u, v, r1, r2), I_d" : "(u, v, lambda), I_d";
-  Step texture{"",     tex.texram, mat.sampler,  DrfOp::kTexture, !steps.empty(),
-               coords, {},         mat.footprint};
-  steps.push_back(texture);
+  Step texture{"",     tex.texram, mat.sampler,   DrfOp::kTexture, !steps.empty(),
+               coords, {},         mat.footprint, tex.detail,      false,
+               {}};
+  texture.modulate = mat.detail && mat.detail->modulate;
+  push_with_detail(steps, texture);
   if (maps.reflectance) {
-    steps.push_back(map_step("reflectance", maps.reflectance, DrfOp::kReflectance, false, "",
-                             texram::Addressing::kTexel));
+    Step r = map_step("reflectance", maps.reflectance, DrfOp::kReflectance, false, "",
+                      texram::Addressing::kTexel);
+    r.detail = tex.reflectance_detail;
+    r.modulate = mat.reflectance.detail && mat.reflectance.detail->modulate;
+    push_with_detail(steps, r);
   }
   const uint32_t k_s = reflectance_register(mat.reflectance.constant);  // without a map
   if (maps.specular || maps.sphere) {
@@ -89,6 +132,9 @@ std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex
 }
 
 uint32_t cells_of(const Step& s) {
+  if (s.offset_v) {
+    return page_up(s.texture->geometry.bank_cells()) + page_up(s.offset_v->geometry.bank_cells());
+  }
   if (!s.faces[0]) return page_up(s.texture->geometry.bank_cells());
   uint32_t n = 0;
   for (const auto& f : s.faces) n += page_up(f->geometry.bank_cells());
@@ -191,6 +237,11 @@ ScenePrograms compile_drfs(const host::Scene& scene, const std::vector<MaterialT
       const bool ends_pass = s.op == DrfOp::kEmit;
       d.link = k + 1 < steps.size() && !ends_pass ? prog.drfs[k + 1] : 0;
       if (k == 0 || steps[k - 1].op == DrfOp::kEmit) prog.passes.push_back(prog.drfs[k]);
+      if (s.detail) {
+        d.detail = true;
+        d.detail_combine =
+            s.modulate ? texram::DetailCombine::kModulate : texram::DetailCombine::kReplace;
+      }
       if (s.footprint) {
         d.footprint = true;
         d.log2_max_probes = s.footprint->log2_max_probes;
@@ -208,8 +259,12 @@ ScenePrograms compile_drfs(const host::Scene& scene, const std::vector<MaterialT
       if (s.faces[0]) {
         d.cube = true;
         for (size_t f = 0; f < 6; ++f)
-          d.face_base[f] = place(s.faces[f], label + kFaceNames[f], static_cast<int>(f));
+          d.face_base[f] = place(s.faces[f], label + kCubeFaceNames[f], static_cast<int>(f));
         d.base = d.face_base[0];
+      } else if (s.offset_v) {  // the v map right after the u map, where the chip reads it
+        d.base = place(s.texture, label + ".u", -1);
+        if (place(s.offset_v, label + ".v", -1) != texram::chip::offsets_v_base(d))
+          throw std::logic_error("drf_compile: the v-offset map is not where the chip reads it");
       } else {
         d.base = place(s.texture, label, -1);
       }

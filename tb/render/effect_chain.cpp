@@ -30,7 +30,6 @@ using glm::dvec3;
 using glm::dvec4;
 using texram::chip::PixelParameter;
 
-constexpr const char* kFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
 constexpr int kCoordValueBits = 10;  // the coordinate tables' W (the RTL's)
 
 // Runs units one after the other and keeps each with the fragments of its outputs.
@@ -107,7 +106,7 @@ std::vector<uint32_t> chip_pass(const ChainInput& in,
     const host::FragmentRecord& r = in.records[in.frags[k]];
     const deflect::MapCoords& c = map_coords[k];
     if (maps.diffuse) params[k].push_back({1, {c.un, c.vn, 0, r.shade}});
-    params[k].push_back({1, {r.u, r.v, r.lambda, r.shade}});
+    params[k].push_back(texture_parameter(mat, r, r.shade));
     if (mat.specular || mat.environment) {
       if (maps.specular || maps.sphere) params[k].push_back({1, {c.un, c.vn, 0, 0}});
     }
@@ -245,8 +244,8 @@ std::vector<uint32_t> run_effect_chain(const ChainInput& in, std::vector<UnitRun
         fragments.push_back(frags[k]);
       }
       if (which.empty()) continue;
-      const std::vector<uint32_t> e = runner.sample(std::string("environment") + kFaceNames[face],
-                                                    maps.cube[face], uvl, fragments);
+      const std::vector<uint32_t> e = runner.sample(
+          std::string("environment") + kCubeFaceNames[face], maps.cube[face], uvl, fragments);
       for (size_t j = 0; j < which.size(); ++j) specular[which[j]] = e[j];
     }
   }
@@ -304,6 +303,17 @@ std::vector<dvec4> ideal_effect_chain(const ChainInput& in,
     const double side = double(1 << map.log2_side);
     return sample(map, (c.un + 1) / 2 * side, (1 - c.vn) / 2 * side, 0);
   };
+  // R: the reflectance map at the texture's (u, v, lambda), through its detail map when it has
+  // one (the detail sample's exact rules, texram/detail_ideal).
+  const auto reflectance = [&](const host::Fragment& f) {
+    const texram::IdealDetailMap* detail = in.texture.ideal_reflectance_detail.get();
+    if (!detail) return sample(maps.reflectance, f.uv.x, f.uv.y, f.lambda);
+    const auto combine = mat.reflectance.detail->modulate ? texram::DetailCombine::kModulate
+                                                          : texram::DetailCombine::kReplace;
+    const auto s = texram::ideal_detail_sample(*maps.reflectance.ideal, maps.reflectance.sampler,
+                                               *detail, combine, f.uv.x, f.uv.y, f.lambda);
+    return dvec4(s[0], s[1], s[2], s[3]);
+  };
   texram::SamplerConfig unshaded = mat.sampler;
   if (unshaded.combine == texram::Combine::kShade) unshaded.combine = texram::Combine::kOne;
 
@@ -333,8 +343,7 @@ std::vector<dvec4> ideal_effect_chain(const ChainInput& in,
         const deflect::CubeIdeal a = deflect::cube_address_ideal(c.ur, c.vr, c.wr, face_log2);
         e = sample(maps.cube[a.face], a.u, a.v, 0);
       }
-      const dvec3 r = maps.reflectance ? dvec3(sample(maps.reflectance, f.uv.x, f.uv.y, f.lambda))
-                                       : 255.0 * mat.reflectance.constant;
+      const dvec3 r = maps.reflectance ? dvec3(reflectance(f)) : 255.0 * mat.reflectance.constant;
       for (int ch = 0; ch < 3; ++ch) colour[ch] = std::min(255.0, colour[ch] + e[ch] * r[ch] / 255);
     }
     out.push_back(colour);

@@ -29,6 +29,9 @@ struct MapTexture {
   explicit operator bool() const { return texture != nullptr; }
 };
 
+// The cube faces' names in EffectMaps::cube's order, for labels.
+inline constexpr const char* kCubeFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+
 struct EffectMaps {
   MapTexture bump;                 // nearest, the material's borders
   MapTexture diffuse, specular;    // shading maps: bilinear, clamp

@@ -18,6 +18,7 @@
 #include "common/image.hpp"
 #include "footprint/footprint_ideal.hpp"
 #include "render/chip_stage.hpp"
+#include "render/detail_maps.hpp"
 #include "render/effect_chain.hpp"
 #include "render/jobs.hpp"
 #include "render/procedural_chain.hpp"
@@ -81,6 +82,11 @@ glm::dvec4 ideal_texture(const host::Material& mat, const MaterialTexture& tex,
     const footprint::IdealConfig ic{mat.footprint->log2_max_probes, mat.footprint->q_rule,
                                     footprint::Direction::kLongerSide};
     s = footprint::ideal_sample(*tex.ideal, sampler, ic, f.uv, f.r1, f.r2, shade);
+  } else if (tex.ideal_detail) {
+    const auto combine =
+        mat.detail->modulate ? texram::DetailCombine::kModulate : texram::DetailCombine::kReplace;
+    s = texram::ideal_detail_sample(*tex.ideal, sampler, *tex.ideal_detail, combine, f.uv.x, f.uv.y,
+                                    f.lambda, shade);
   } else {
     s = texram::ideal_sample(*tex.ideal, sampler, f.uv.x, f.uv.y, f.lambda, shade);
   }
@@ -133,6 +139,37 @@ Pipeline::Pipeline(const host::Scene& scene, Level level, int chips)
       throw InputError(scene.path, field, e.what());
     }
     if (mat.uses_normal()) mt.effects = build_effect_maps(scene, mat);
+    if (mat.has_detail()) {
+      // Only the chip has the detail path (its offsets and detail DRFs): the separate units have
+      // none, so at golden, hls and rtl a detail scene renders on chips or not at all. The ideal
+      // renderer samples the detail maps exactly (texram/detail_ideal).
+      const std::string at =
+          "materials." + mat.name + (mat.detail ? ".detail" : ".reflectance.detail");
+      if (level != Level::kIdeal && chips <= 0) {
+        throw InputError(scene.path, at,
+                         "detail maps are sampled by the TEXRAM chip only: render with --chips N");
+      }
+      if (level == Level::kIdeal && mat.detail && mat.footprint) {
+        throw InputError(scene.path, at,
+                         "the ideal footprint marcher has no detail path (the chip's probes take "
+                         "it: compare golden with hls or rtl instead)");
+      }
+      try {
+        if (level == Level::kIdeal) {
+          if (mat.detail) mt.ideal_detail = build_ideal_detail_map(*mat.detail, mt.size);
+          if (mat.reflectance.detail)
+            mt.ideal_reflectance_detail = build_ideal_detail_map(*mat.reflectance.detail, mt.size);
+        } else {
+          if (mat.detail) mt.detail = build_detail_map(*mat.detail, mt.size);
+          if (mat.reflectance.detail)
+            mt.reflectance_detail = build_detail_map(*mat.reflectance.detail, mt.size);
+        }
+      } catch (const InputError& e) {
+        throw InputError(scene.path, at, e.what());
+      } catch (const std::invalid_argument& e) {
+        throw InputError(scene.path, at, e.what());
+      }
+    }
     textures_.push_back(std::move(mt));
   }
   if (chips > 0 && level != Level::kIdeal) {
@@ -315,8 +352,7 @@ std::vector<uint32_t> Pipeline::shade(const std::vector<host::FragmentRecord>& r
              : std::vector<host::FragmentRecord>{};
       const std::vector<host::FragmentRecord>& at = pc ? tau : records;
       std::vector<std::vector<texram::chip::PixelParameter>> params;
-      for (size_t i : frags)
-        params.push_back({{1, {at[i].u, at[i].v, at[i].lambda, records[i].shade}}});
+      for (size_t i : frags) params.push_back({texture_parameter(mat, at[i], records[i].shade)});
       const std::vector<uint32_t> rgba =
           chip->run_pass(m, 0, std::move(params), frags, level_, w.units, w.outputs_of);
       for (size_t k = 0; k < frags.size(); ++k) out[frags[k]] = rgba[k];

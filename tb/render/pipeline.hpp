@@ -24,6 +24,8 @@
 #include "render/effect_maps.hpp"
 #include "render/units.hpp"
 #include "scene/scene.hpp"
+#include "texram/detail.hpp"
+#include "texram/detail_ideal.hpp"
 #include "texram/texture.hpp"
 #include "texram/trilinear_ideal.hpp"
 
@@ -35,6 +37,11 @@ struct MaterialTexture {
   std::shared_ptr<const ccc::Texture> ccc;              // the low-cost unit's level 0
   glm::ivec2 size{1, 1};                                // level-0 texels
   EffectMaps effects;                                   // what the deflection chain reads
+  // The detail maps of the texture and of the reflectance map (render/detail_maps), which only
+  // the chip samples (its offsets and detail DRFs, render/drf_compile).
+  std::shared_ptr<const texram::DetailMap> detail, reflectance_detail;
+  // The same for the ideal renderer (Level::kIdeal), from the sources.
+  std::shared_ptr<const texram::IdealDetailMap> ideal_detail, ideal_reflectance_detail;
   // texram holds the host pyramid until the mipmap generator writes the banks, which it does
   // for the material's first fragments (Pipeline::shade).
   bool mipgen_pending = false;

@@ -95,7 +95,7 @@ void run_drf(const DrfArgs& a) {
   const host::Scene scene = host::load_scene(a.scene);
   // Golden loads the maps as the chip holds them (a mipgen material's levels have the sizes of
   // the host pyramid).
-  const render::Pipeline pipe(scene, render::Level::kGolden);
+  const render::Pipeline pipe(scene, render::Level::kGolden, a.chips);
   const render::ScenePrograms programs = render::compile_drfs(scene, pipe.textures(), a.chips);
   int used = 0;
   for (const render::ChipProgram& c : programs.chips) used += c.used_drfs > 0 || c.cube_used;
