@@ -1,4 +1,5 @@
-// The video row buffers' own tests (the conformance suite runs golden = hls = rtl): the figure
+// The video row buffers' own tests (the conformance suite runs golden = hls = rtl): a wait
+// beyond 16 bits saturates (the suite's runs are far shorter), and the figure
 // of docs/video.md, sampler cycles lost to a 512 x 512 video at 30 frames per second, with the
 // chip's row (a 512-cell DRAM page, the golden default) against the block's short row (8
 // cells, rtl/texram/tmu_video_rows.sv's default), from the golden cycle model at the block's 8
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "blocks/video_rows/video_rows_block.hpp"
+#include "tests/cosim_test_support.hpp"
 #include "texram/video/video_map.hpp"
 
 namespace tmu::tb {
@@ -77,6 +79,24 @@ TEST(VideoRowsTest, SamplerCyclesLostTo512VideoAt30fpsByRowLength) {
     EXPECT_EQ(map.late_reads(), 0u);
     EXPECT_EQ(s.sampler_lost, row.lost);
   }
+}
+
+// A row held by the swap barrier for 70 000 cycles of a sampler at every cycle, then released:
+// its wait counter saturates at 0xFFFF, which is still >= L, so the row is forced in the next
+// cycle with the wait 0xFFFF, alike on golden (which counts in 64 bits and clips the output),
+// hls and rtl.
+TEST(VideoRowsTest, WaitsSaturateAtSixteenBits) {
+  using D = desc::video_rows;
+  const BlockPorts& t = D::table();
+  std::vector<Txn> items = {channel_item(t, "cfg", {4, 0}), channel_item(t, "hold", {0})};
+  for (uint64_t c = 0; c < 8; ++c) items.push_back(channel_item(t, "put", {0, c, 10 + c, 1}));
+  const size_t held = 70'000;
+  for (size_t i = 0; i < held; ++i) items.push_back(channel_item(t, "cycle", {1}));
+  items.push_back(channel_item(t, "hold", {0xFFFF}));
+  items.push_back(channel_item(t, "cycle", {1}));
+  std::vector<uint64_t> want(held, 0);
+  want.push_back(0xFFFF);
+  testing::expect_outputs(VideoRowsBlock(), items, D::out_wait, want);
 }
 
 }  // namespace
