@@ -352,6 +352,43 @@ tmu_mutant(mipgen unreset FILE texram/tmu_mipgen.sv EXPECT x-leak
   FROM "      src_x_q <= '0;\n      src_y_q <= '0;\n" TO ""
   WHY "the source position starts where its flops happen to be (the first frame's texels are written elsewhere)")
 
+# TEXRAM video port receiver (000 §11; golden/texram/video/video_port.hpp, docs/video.md).
+tmu_block(video_port)
+tmu_mutant(video_port line_start FILE texram/tmu_video_port.sv
+  FROM "in_frame_q && in_flags_i == expected;" TO "in_frame_q && (in_flags_i | LineStart) == (expected | LineStart);"
+  WHY "the receiver ignores first-of-line: a line one texel short or long is taken as the next line's texel (the frame is shown torn instead of dropped)")
+tmu_mutant(video_port field_order FILE texram/tmu_video_port.sv
+  FROM "assign order_err  = !match && " TO "assign order_err  = 1'b0 && !match && "
+  WHY "a first-of-frame item flagged field 2 is discarded silently (no field-order error, not counted)")
+tmu_mutant(video_port field2 FILE texram/tmu_video_port.sv
+  FROM "(fields && y_next == height) ? CoordW'(1) : y_next[CoordW-1:0]" TO "y_next[CoordW-1:0]"
+  WHY "after field 1's last line the receiver expects line height instead of line 1: every interlaced frame's field 2 is dropped")
+tmu_mutant(video_port unreset FILE texram/tmu_video_port.sv EXPECT x-leak
+  FROM "      discarded_q <= '0;\n" TO ""
+  WHY "the discarded-items counter starts where its flops happen to be")
+
+# TEXRAM video page-row buffers and write arbiter (000 §11-12; golden/texram/video/row_buffers.hpp
+# at 8-cell rows and 8 buffers a bank, docs/video.md).
+tmu_block(video_rows)
+tmu_mutant(video_rows no_bound FILE texram/tmu_video_rows.sv
+  FROM "(!sampler || rq_age_q[wr_k[IdW-1:0]] >= cfg_max_wait_i)" TO "(!sampler)"
+  WHY "no write-latency bound: under a sampler at every cycle a ready row waits for ever (the frame is never swapped in)")
+tmu_mutant(video_rows writes_first FILE texram/tmu_video_rows.sv
+  FROM "(!sampler || rq_age_q[wr_k[IdW-1:0]] >= cfg_max_wait_i)" TO "(1'b1 || rq_age_q[wr_k[IdW-1:0]] >= cfg_max_wait_i)"
+  WHY "a ready row goes before the sampler at once, without waiting L (the rasterizer slows down)")
+tmu_mutant(video_rows no_flush FILE texram/tmu_video_rows.sv
+  FROM "if (st_q[i] == Collecting && tag_q[i] == flush_tag_i)" TO "if (1'b0 && st_q[i] == Collecting && tag_q[i] == flush_tag_i)"
+  WHY "a frame's end flushes nothing: its partial rows stay in the buffers and never reach the memory")
+tmu_mutant(video_rows fault_free FILE texram/tmu_video_rows.sv
+  FROM "assign fault    = !open_v_q[acc_bank] || open_pg_q[acc_bank] != acc_page;" TO "assign fault    = 1'b0;"
+  WHY "page faults cost no second cycle (the sampler's lost cycles are undercounted)")
+tmu_mutant(video_rows sampler_pages FILE texram/tmu_video_rows.sv
+  FROM "open_v_q <= '0;\n        end" TO "open_v_q <= open_v_q;\n        end"
+  WHY "a sampler access keeps every bank's page open (a write after the sampler is taken as a page hit)")
+tmu_mutant(video_rows unreset FILE texram/tmu_video_rows.sv EXPECT x-leak
+  FROM "      max_busy_q  <= '0;\n" TO ""
+  WHY "the busy-buffer high-water mark starts where its flops happen to be")
+
 # CCC decoder (000 §3, Fig. 5).
 tmu_block(ccc_decoder)
 tmu_mutant(ccc_decoder decision FILE ccc/tmu_ccc_decoder.sv

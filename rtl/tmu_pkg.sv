@@ -390,6 +390,16 @@ package tmu_pkg;
   localparam int unsigned VideoTexelFrac = 0;
   typedef logic [VideoTexelW-1:0] video_texel_t;
 
+  // VideoError: UQ2.0, video receiver: an item's error: 0 none, 1 flags not those of its place (the frame under way dropped), 2 field order (a first-of-frame item flagged field 2)
+  localparam int unsigned VideoErrorW = 2;
+  localparam int unsigned VideoErrorFrac = 0;
+  typedef logic [VideoErrorW-1:0] video_error_t;
+
+  // VideoTag: UQ16.0, video row buffers: a frame's tag (its number, wrapping), and the arbiter's cycle stamps and waits
+  localparam int unsigned VideoTagW = 16;
+  localparam int unsigned VideoTagFrac = 0;
+  typedef logic [VideoTagW-1:0] video_tag_t;
+
   // largest texture side in texels
   localparam int unsigned MaxTexSize = 4096;
 

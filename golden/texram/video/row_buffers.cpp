@@ -125,6 +125,16 @@ void RowBuffers::write_access(size_t id) {
     if (b.valid[i]) memory_.at(b.bank).at(first + i) = b.data[i];
   }
   const uint64_t latency = stats_.cycles - b.ready_cycle;
+  last_.kind = Access::Kind::kWrite;
+  last_.bank = b.bank;
+  last_.segment = b.segment;
+  last_.fault = fault;
+  last_.mask = b.valid;
+  last_.data.assign(config_.segment_cells, 0);
+  for (uint32_t i = 0; i < config_.segment_cells; ++i) {
+    if (b.valid[i]) last_.data[i] = b.data[i];
+  }
+  last_.wait = latency;
   stats_.max_latency = std::max(stats_.max_latency, latency);
   stats_.min_latency = std::min(stats_.min_latency, latency);
   stats_.latency_sum += latency;
@@ -149,6 +159,12 @@ void RowBuffers::read_access() {
   const bool fault = open_page_[r.bank] != page;
   open_page_[r.bank] = page;
   stats_.max_read_latency = std::max(stats_.max_read_latency, stats_.cycles - r.request_cycle);
+  last_ = Access{};
+  last_.kind = Access::Kind::kRead;
+  last_.bank = r.bank;
+  last_.segment = r.segment;
+  last_.fault = fault;
+  last_.wait = stats_.cycles - r.request_cycle;
   ++stats_.read_accesses;
   stats_.read_cycles += fault ? 2 : 1;
   stats_.read_faults += fault;
@@ -159,6 +175,7 @@ void RowBuffers::read_access() {
 
 bool RowBuffers::cycle(bool sampler_wants) {
   stats_.sampler_wanted += sampler_wants;
+  last_.kind = Access::Kind::kNone;
   bool granted = false;
   if (busy_ == 0 && !reads_.empty() &&
       (!sampler_wants || stats_.cycles - reads_.front().request_cycle >= config_.read_wait)) {

@@ -103,6 +103,25 @@ class RowBuffers {
   // One memory cycle. Returns whether the sampler got the cycle (false when it did not want it).
   bool cycle(bool sampler_wants);
 
+  // What the last cycle() started: a write of a buffer or a read of a segment (the block
+  // driver of the video_rows co-simulation compares every access with the RTL's).
+  struct Access {
+    enum class Kind : uint8_t { kNone, kWrite, kRead } kind = Kind::kNone;
+    unsigned bank = 0;
+    uint32_t segment = 0;
+    bool fault = false;
+    std::vector<bool> mask;     // a write: the cells written (segment_cells of them)
+    std::vector<uint8_t> data;  // a write: the buffer's cells (a cell not in the mask: 0)
+    uint64_t wait = 0;          // cycles from ready (a write) or request (a read) to the access
+  };
+  const Access& last_access() const { return last_; }
+  // A new bound L and read bound, effective from the next cycle (the buffers stay).
+  void set_waits(uint32_t max_wait, uint32_t read_wait) {
+    config_.max_wait = max_wait;
+    config_.read_wait = read_wait;
+  }
+  size_t reads_pending() const { return reads_.size(); }
+
   const ArbiterStats& stats() const { return stats_; }
 
  private:
@@ -140,6 +159,7 @@ class RowBuffers {
   uint64_t reads_requested_ = 0, reads_completed_ = 0;
   int busy_ = 0;  // cycles left of that write
   ArbiterStats stats_;
+  Access last_;
 };
 
 }  // namespace tmu::texram::video

@@ -92,6 +92,14 @@ VideoFrame test_frame(const VideoFormat& format, uint32_t k) {
 
 VideoReceiver::VideoReceiver(const VideoFormat& format) : format_(checked(format)) {}
 
+void VideoReceiver::set_format(const VideoFormat& format) {
+  format_ = checked(format);
+  if (in_frame_) {
+    in_frame_ = false;
+    ++stats_.frames_dropped;
+  }
+}
+
 void VideoReceiver::advance() {
   if (++x_ < format_.width()) return;
   x_ = 0;

@@ -100,6 +100,10 @@ class VideoReceiver {
   explicit VideoReceiver(const VideoFormat& format);
 
   const VideoFormat& format() const { return format_; }
+  // A new format, written between frames (the format is quasi-static). A frame under way is
+  // dropped and counted (its place has no meaning in the new format); the counters stay.
+  // Throws std::invalid_argument like the constructor.
+  void set_format(const VideoFormat& format);
   Received step(const VideoItem& item);
   const ReceiverStats& stats() const { return stats_; }
   bool in_frame() const { return in_frame_; }
