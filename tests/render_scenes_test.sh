@@ -3,9 +3,10 @@
 # golden (rendered inside each check), pixel by pixel and unit by unit (outputs, memory requests,
 # counters); and at rtl through four TEXRAM chips, checked against golden through them.
 # A volume scene (a "volume" section) renders at ideal and golden (against the ideal), on four
-# chips bit for bit as on one, and a 32 x 32 copy at rtl and hls through the co-simulated volume
-# unit (render/volume_engine_block.hpp), checked against golden resample by resample, counter by
-# counter and run by run of the block, on one chip and on four.
+# chips bit for bit as on one, and small copies at rtl (32 x 32, one chip and four) and hls
+# (16 x 16) through the co-simulated volume unit (render/volume_engine_block.hpp), checked against
+# golden resample by resample, counter by counter and run by run of the block, with an injected
+# fault caught.
 #   tests/render_scenes_test.sh PATH/TO/texsim [SCENE.json ...]   (default: every bundled scene)
 # CTest runs one scene per test (render_scene_<name>), so that the scenes spread over the cores.
 source "$(dirname "${BASH_SOURCE[0]}")/check_lib.sh" "$1"
@@ -50,18 +51,25 @@ for scene in "${scenes[@]}"; do
       echo "FAIL $name: golden on 4 chips differs from 1 chip"
       failures=$((failures + 1))
     fi
-    # The co-simulated unit: a small copy of the scene (the frame's rays, not the volume, are
-    # what costs), rtl on 1 and 4 chips, hls on 1.
+    # The co-simulated unit: small copies of the scene (the frame's rays, not the volume, are
+    # what costs), rtl at 32 x 32 on 1 and 4 chips, hls (slower: sequential) at 16 x 16.
+    for size in 32 16; do
+      sed "s/\"resolution\": \[[0-9]*, [0-9]*\]/\"resolution\": [$size, $size]/" "$scene" \
+        >"$work/$name-$size.json"
+      grep -q "\"resolution\": \[$size, $size\]" "$work/$name-$size.json" ||
+        fail "$name: no $size x $size copy"
+    done
     small="$work/$name-32.json"
-    sed 's/"resolution": \[[0-9]*, [0-9]*\]/"resolution": [32, 32]/' "$scene" >"$small"
-    grep -q '"resolution": \[32, 32\]' "$small" || fail "$name: no 32 x 32 copy"
-    for run in "rtl --chips 1" "rtl --chips 4" "hls --chips 1"; do
+    for run in "rtl --chips 1:32" "rtl --chips 4:32" "hls --chips 1:16"; do
+      size=${run##*:}
+      run=${run%:*}
       # shellcheck disable=SC2086
-      if out=$("$texsim" render "$small" --engine $run --check golden --out "$work/$name-co" \
-        --no-progress 2>&1) && grep -q "check: MATCH: .*unit by unit: [0-9]* runs" <<<"$out"; then
-        echo "ok   $name (32 x 32): $run --check golden ($(grep -oE "MATCH: [^;]*; unit by unit: [0-9]* runs" <<<"$out"))"
+      if out=$("$texsim" render "$work/$name-$size.json" --engine $run --check golden \
+        --out "$work/$name-co" --no-progress 2>&1) &&
+        grep -q "check: MATCH: .*unit by unit: [0-9]* runs" <<<"$out"; then
+        echo "ok   $name ($size x $size): $run --check golden ($(grep -oE "MATCH: [^;]*; unit by unit: [0-9]* runs" <<<"$out"))"
       else
-        echo "FAIL $name (32 x 32): $run --check golden"; echo "$out" | tail -15
+        echo "FAIL $name ($size x $size): $run --check golden"; echo "$out" | tail -15
         failures=$((failures + 1))
       fi
     done
