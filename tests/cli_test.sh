@@ -156,7 +156,7 @@ expect "a fly-over has no ideal render" 2 "golden, hls or rtl" -- \
 expect "--frames is for fly-overs" 2 "fly-over" -- \
   "$texsim" render "$root/scenes/plain.json" --frames 1 --out rx
 # Volume scenes (docs/volume.md): errors name the file, the field and the reason; nothing is
-# written (vx must not appear); the volume unit has no hls or rtl engine yet.
+# written (vx must not appear); a fault is injected only into the hls or rtl unit's output.
 sed 's/"weight_bits": 8/"weight_bits": 9/' "$root/scenes/volume_marschner_lobb.json" >wbits.json
 expect "a volume scene's weight bits out of range" 2 "wbits.json: volume.weight_bits: must be an integer in 1..8" -- \
   "$texsim" render wbits.json --out vx
@@ -164,8 +164,9 @@ sed 's/"step": 1/"stepp": 1/' "$root/scenes/volume_sphere.json" >vkey.json
 expect "an unknown volume key" 2 "vkey.json: volume.stepp: unknown key" -- "$texsim" render vkey.json --out vx
 expect "too many chips for the planes" 2 "--chips: 40 chips for 64 planes along x" -- \
   "$texsim" render "$root/scenes/volume_sphere.json" --chips 40 --out vx
-expect "a volume scene at rtl" 2 "volume unit: no hls/rtl engine yet" -- \
-  "$texsim" render "$root/scenes/volume_sphere.json" --engine rtl --out vx
+expect "a volume scene's fault at golden" 2 \
+  "--inject-fault: a volume scene's fault goes into an hls or rtl engine's output" -- \
+  "$texsim" render "$root/scenes/volume_sphere.json" --engine golden --inject-fault 3 --out vx
 [[ ! -e vx ]] && pass "no output directory after the failed volume renders" || fail "vx was written"
 expect "volume-gen: the engine part as a raw file" 0 "wrote engine.raw: 16 x 16 x 16 raw 8-bit voxels" -- \
   "$texsim" volume-gen engine engine.raw --size 16,16,16

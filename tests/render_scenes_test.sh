@@ -3,8 +3,10 @@
 # golden (rendered inside each check), pixel by pixel and unit by unit (outputs, memory requests,
 # counters); and at rtl through four TEXRAM chips, checked against golden through them.
 # A volume scene (a "volume" section) renders at ideal and golden (against the ideal), on four
-# chips bit for bit as on one, and is refused at hls and rtl with the reason: the volume unit has
-# no hls or rtl engine yet (tb/render/volume_engine.hpp; its block is being built).
+# chips bit for bit as on one, and small copies at rtl (32 x 32, one chip and four) and hls
+# (16 x 16) through the co-simulated volume unit (render/volume_engine_block.hpp), checked against
+# golden resample by resample, counter by counter and run by run of the block, with an injected
+# fault caught.
 #   tests/render_scenes_test.sh PATH/TO/texsim [SCENE.json ...]   (default: every bundled scene)
 # CTest runs one scene per test (render_scene_<name>), so that the scenes spread over the cores.
 source "$(dirname "${BASH_SOURCE[0]}")/check_lib.sh" "$1"
@@ -79,17 +81,38 @@ for scene in "${scenes[@]}"; do
       echo "FAIL $name: golden on 4 chips differs from 1 chip"
       failures=$((failures + 1))
     fi
-    for engine in hls rtl; do
-      refused="$work/$name-$engine"
-      out=$("$texsim" render "$scene" --engine $engine --check golden --out "$refused" --no-progress 2>&1)
-      code=$?
-      if [[ $code -eq 2 && $out == *"volume unit: no hls/rtl engine yet"* && ! -e $refused ]]; then
-        echo "ok   $name: $engine refused (exit 2, no output): the volume unit has no $engine engine yet"
+    # The co-simulated unit: small copies of the scene (the frame's rays, not the volume, are
+    # what costs), rtl at 32 x 32 on 1 and 4 chips, hls (slower: sequential) at 16 x 16.
+    for size in 32 16; do
+      sed "s/\"resolution\": \[[0-9]*, [0-9]*\]/\"resolution\": [$size, $size]/" "$scene" \
+        >"$work/$name-$size.json"
+      grep -q "\"resolution\": \[$size, $size\]" "$work/$name-$size.json" ||
+        fail "$name: no $size x $size copy"
+    done
+    small="$work/$name-32.json"
+    for run in "rtl --chips 1:32" "rtl --chips 4:32" "hls --chips 1:16"; do
+      size=${run##*:}
+      run=${run%:*}
+      # shellcheck disable=SC2086
+      if out=$("$texsim" render "$work/$name-$size.json" --engine $run --check golden \
+        --out "$work/$name-co" --no-progress 2>&1) &&
+        grep -q "check: MATCH: .*unit by unit: [0-9]* runs" <<<"$out"; then
+        echo "ok   $name ($size x $size): $run --check golden ($(grep -oE "MATCH: [^;]*; unit by unit: [0-9]* runs" <<<"$out"))"
       else
-        echo "FAIL $name: $engine: exit $code: $out"
+        echo "FAIL $name ($size x $size): $run --check golden"; echo "$out" | tail -15
         failures=$((failures + 1))
       fi
     done
+    # The check can fail: one output's bit flipped in the rtl engine is found, exit 1.
+    out=$("$texsim" render "$small" --engine rtl --check golden --inject-fault 100 \
+      --out "$work/$name-fault" --no-progress 2>&1)
+    code=$?
+    if [[ $code -eq 1 && $out == *"check: MISMATCH: "*"; 1 of "*" runs of the block differ"* ]]; then
+      echo "ok   $name (32 x 32): an injected fault is caught (exit 1)"
+    else
+      echo "FAIL $name (32 x 32): the injected fault: exit $code"; echo "$out" | tail -15
+      failures=$((failures + 1))
+    fi
   fi
   if grep -q '"flyover"' "$scene"; then
     alone="$work/$name-alone"

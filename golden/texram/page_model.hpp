@@ -30,15 +30,22 @@ struct PageStats {
   friend bool operator==(const PageStats&, const PageStats&) = default;
 };
 
+// The page open in each bank (none before the bank's first read).
+using OpenPages = std::array<std::optional<uint32_t>, 8>;
+
 class PageModel {
  public:
+  // `open`: the pages already open, so that a run cut into pieces (a render's batches through
+  // the co-simulated volume unit) counts as the one long run would; by default none.
+  explicit PageModel(const OpenPages& open = {}) : open_page_(open) {}
   // One access reading the given address in each bank (nothing where empty). Returns the
   // periods it takes: 1, or 2 on a page fault in any bank it reads.
   int access(const std::array<std::optional<uint32_t>, 8>& addresses);
   const PageStats& stats() const { return stats_; }
+  const OpenPages& open_pages() const { return open_page_; }
 
  private:
-  std::array<std::optional<uint32_t>, 8> open_page_{};
+  OpenPages open_page_{};
   PageStats stats_;
 };
 

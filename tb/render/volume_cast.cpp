@@ -1,9 +1,12 @@
 #include "render/volume_cast.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <limits>
 
+#include "texram/page_model.hpp"
 #include "volume/compositing.hpp"
 #include "volume/sample_shading.hpp"
 
@@ -28,6 +31,12 @@ double VolumeFrame::unit_seconds() const {
   double s = 0;
   for (const VolumeCounters& c : chips) s = std::max(s, c.seconds());
   return s;
+}
+
+double VolumeFrame::clocked_seconds() const {
+  uint64_t c = 0;
+  for (uint64_t k : chip_cycles) c = std::max(c, k);
+  return static_cast<double>(c) * texram::kAccessNs * 1e-9;
 }
 
 std::vector<host::RaySetup> set_up_rays(const host::VolumeScene& scene) {
@@ -57,9 +66,14 @@ VolumeFrame cast_volume(const host::VolumeScene& scene, const std::vector<volume
   const volume::Config config{mode, scene.weight_bits};
   std::vector<std::vector<std::unique_ptr<VolumeUnitEngine>>> engines(f.plan.slabs.size());
   for (size_t c = 0; c < engines.size(); ++c) {
-    for (const volume::VoxelGrid& g : grids) {
+    for (size_t k = 0; k < grids.size(); ++k) {
+      VolumeEngineOptions eo;
+      eo.check = o.check_units;
+      eo.inject_fault = c == 0 && k == 0 ? o.inject_fault : -1;
+      eo.name = fmt::format("chip {}, component {}", c, k);
+      const volume::VoxelGrid& g = grids[k];
       engines[c].push_back(make_volume_engine(
-          o.level, o.level == Level::kIdeal ? g : host::slab_grid(g, f.plan, c), config));
+          o.level, o.level == Level::kIdeal ? g : host::slab_grid(g, f.plan, c), config, eo));
     }
   }
   const host::SampleShading shading(scene.transfer, scene.lights, scene.step, scene.data.size);
@@ -155,8 +169,17 @@ VolumeFrame cast_volume(const host::VolumeScene& scene, const std::vector<volume
     f.composited += compositors[p].added();
   }
   f.chips.resize(engines.size());
+  f.chip_cycles.assign(engines.size(), 0);
   for (size_t c = 0; c < engines.size(); ++c) {
-    for (const auto& e : engines[c]) f.chips[c] += e->counters();
+    for (const auto& e : engines[c]) {
+      f.chips[c] += e->counters();
+      f.chip_cycles[c] += e->cycles();
+      f.pieces += e->pieces();
+      if (const auto check = e->piece_check()) {
+        if (!f.unit_check) f.unit_check.emplace();
+        *f.unit_check += *check;
+      }
+    }
     f.total += f.chips[c];
     f.has_memory = engines[c].front()->has_memory();
   }

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 #include <vector>
 
 #include "render/units.hpp"
@@ -30,17 +31,34 @@ struct VolumeFrame {
   host::SlabPlan plan;
   std::vector<VolumeCounters> chips;  // per chip, its components' engines summed
   VolumeCounters total;
+  // hls, rtl: per chip the clocked cycles of its block runs (its components' one after
+  // another), and the runs (pieces) of all chips.
+  std::vector<uint64_t> chip_cycles;
+  uint64_t pieces = 0;
+  // With VolumeCastOptions::check_units: every engine's pieces against the reference level.
+  std::optional<VolumePieceCheck> unit_check;
   bool has_memory = false;
   double setup_s = 0, unit_s = 0, composite_s = 0;
-  // The unit's time for the frame: the slowest chip's (the chips work at once).
+  // The unit's time for the frame: the slowest chip's (the chips work at once), from the page
+  // model's counts (an access a period, two on a fault).
   double unit_seconds() const;
+  // hls, rtl: the slowest chip's clocked cycles at 30 ns a cycle (0 when untimed).
+  double clocked_seconds() const;
 };
 
 struct VolumeCastOptions {
-  Level level = Level::kGolden;
-  int chips = 1;  // the ideal reads the whole volume: always one
+  VolumeCastOptions(Level level_ = Level::kGolden, int chips_ = 1,
+                    std::vector<VolumeSample>* record_ = nullptr)
+      : level(level_), chips(chips_), record(record_) {}
+  Level level;
+  int chips;  // the ideal reads the whole volume: always one
   // Every sample the engines returned, in the order they returned them (for the check).
-  std::vector<VolumeSample>* record = nullptr;
+  std::vector<VolumeSample>* record;
+  // hls, rtl: run every piece at this level too and compare unit by unit
+  // (VolumeEngineOptions::check).
+  std::optional<Level> check_units;
+  // hls, rtl: the output of chip 0's first component's engine whose value bit 0 is flipped.
+  int64_t inject_fault = -1;
 };
 
 // The rays of a frame, one per pixel, row-major.

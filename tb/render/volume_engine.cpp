@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "render/volume_engine_block.hpp"
 #include "render/volume_engine_ideal.hpp"
 #include "texram/page_model.hpp"
 
@@ -22,13 +23,14 @@ class GoldenVolumeEngine final : public VolumeUnitEngine {
                                                static_cast<double>(1 << volume::kGradFrac)});
       }
       resamples_ += c.ray.count;
+      ++rays_;
     }
     return out;
   }
 
   VolumeCounters counters() const override {
     const texram::PageStats& s = pages_.stats();
-    return {resamples_, s.accesses, s.bank_reads, s.page_faults, s.slow_accesses};
+    return {rays_, resamples_, s.accesses, s.bank_reads, s.page_faults, s.slow_accesses};
   }
   bool has_memory() const override { return true; }
 
@@ -36,7 +38,7 @@ class GoldenVolumeEngine final : public VolumeUnitEngine {
   volume::VolumeMemory memory_;
   volume::Config config_;
   texram::PageModel pages_;
-  uint64_t resamples_ = 0;
+  uint64_t rays_ = 0, resamples_ = 0;
 };
 
 }  // namespace
@@ -46,6 +48,7 @@ double VolumeCounters::seconds() const {
 }
 
 VolumeCounters& VolumeCounters::operator+=(const VolumeCounters& o) {
+  rays += o.rays;
   resamples += o.resamples;
   accesses += o.accesses;
   bank_reads += o.bank_reads;
@@ -54,19 +57,24 @@ VolumeCounters& VolumeCounters::operator+=(const VolumeCounters& o) {
   return *this;
 }
 
-void require_volume_engine(Level level) {
-  if (level == Level::kHls || level == Level::kRtl) {
-    throw std::runtime_error(
-        "volume unit: no hls/rtl engine yet (the co-simulated block is being built on branch "
-        "volume-block; it plugs in at tb/render/volume_engine.hpp); use --engine ideal or golden");
+VolumePieceCheck& VolumePieceCheck::operator+=(const VolumePieceCheck& o) {
+  if (against.empty()) against = o.against;
+  pieces += o.pieces;
+  outputs += o.outputs;
+  requests += o.requests;
+  differing_pieces += o.differing_pieces;
+  for (const std::string& f : o.first) {
+    if (first.size() < 5) first.push_back(f);
   }
+  return *this;
 }
 
 std::unique_ptr<VolumeUnitEngine> make_volume_engine(Level level, const volume::VoxelGrid& grid,
-                                                     const volume::Config& config) {
-  require_volume_engine(level);
+                                                     const volume::Config& config,
+                                                     const VolumeEngineOptions& options) {
   if (level == Level::kIdeal) return make_ideal_volume_engine(grid);
-  return std::make_unique<GoldenVolumeEngine>(grid, config);
+  if (level == Level::kGolden) return std::make_unique<GoldenVolumeEngine>(grid, config);
+  return make_block_volume_engine(level, grid, config, options);
 }
 
 }  // namespace tmu::render

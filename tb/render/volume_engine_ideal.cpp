@@ -19,15 +19,16 @@ class IdealVolumeEngine final : public VolumeUnitEngine {
         out.push_back({r.value, glm::dvec3(r.gradient[0], r.gradient[1], r.gradient[2])});
       }
       resamples_ += c.ray.count;
+      ++rays_;
     }
     return out;
   }
-  VolumeCounters counters() const override { return {resamples_, 0, 0, 0, 0}; }
+  VolumeCounters counters() const override { return {rays_, resamples_, 0, 0, 0, 0}; }
   bool has_memory() const override { return false; }
 
  private:
   volume::VoxelGrid grid_;
-  uint64_t resamples_ = 0;
+  uint64_t rays_ = 0, resamples_ = 0;
 };
 
 }  // namespace

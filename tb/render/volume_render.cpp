@@ -76,12 +76,16 @@ VolumeCheckReport check_frames(Level against, const std::vector<VolumeSample>& g
           fmt::format("resample {}: expected {}, got {}", i, text(want, i), text(got, i)));
     }
   }
+  if (a.chips.size() != b.chips.size()) c.counters_match = false;
   for (size_t k = 0; k < a.chips.size() && k < b.chips.size(); ++k) {
     if (a.chips[k] == b.chips[k]) continue;
     c.counters_match = false;
-    c.first.push_back(fmt::format("chip {}: accesses {} / {}, page faults {} / {}", k,
-                                  b.chips[k].accesses, a.chips[k].accesses, b.chips[k].page_faults,
-                                  a.chips[k].page_faults));
+    const VolumeCounters &e = b.chips[k], &g = a.chips[k];
+    c.first.push_back(fmt::format(
+        "chip {} (expected / got): rays {} / {}, resamples {} / {}, accesses {} / {}, bank reads "
+        "{} / {}, page faults {} / {}, slow accesses {} / {}",
+        k, e.rays, g.rays, e.resamples, g.resamples, e.accesses, g.accesses, e.bank_reads,
+        g.bank_reads, e.page_faults, g.page_faults, e.slow_accesses, g.slow_accesses));
   }
   return c;
 }
@@ -135,10 +139,11 @@ int render_volume(const std::string& scene_path, const RenderOptions& o, std::os
   if (o.tiles > 1) throw InputError("--tile", "", "not for a volume scene");
   if (!o.save_trace.empty()) throw InputError("--save-trace", "", "not for a volume scene");
   if (!o.replay_trace.empty()) throw InputError("--replay", "", "not for a volume scene");
-  if (o.inject_fault >= 0) throw InputError("--inject-fault", "", "not for a volume scene");
+  if (o.inject_fault >= 0 && o.level != Level::kHls && o.level != Level::kRtl) {
+    throw InputError("--inject-fault", "",
+                     "a volume scene's fault goes into an hls or rtl engine's output");
+  }
   if (o.waveform) throw InputError("--waveform", "", "not for a volume scene");
-  require_volume_engine(o.level);
-  if (o.check) require_volume_engine(*o.check);
   const host::VolumeScene scene = host::load_volume_scene(scene_path);
   const int chips = o.chips > 0 ? o.chips : scene.chips;
   if (const std::string why =
@@ -162,6 +167,10 @@ int render_volume(const std::string& scene_path, const RenderOptions& o, std::os
 
   std::vector<VolumeSample> record;
   VolumeCastOptions cast{o.level, chips, o.check ? &record : nullptr};
+  // hls and rtl: every piece of the unit's work compared unit by unit as well.
+  if (o.check && *o.check != Level::kIdeal && (o.level == Level::kHls || o.level == Level::kRtl))
+    cast.check_units = *o.check;
+  cast.inject_fault = o.inject_fault;
   const VolumeFrame frame = cast_volume(scene, grids, rays, cast);
   rep.frame = frame;
   rep.frame.pixels.clear();
@@ -182,6 +191,7 @@ int render_volume(const std::string& scene_path, const RenderOptions& o, std::os
     std::vector<VolumeSample> expected;
     const VolumeFrame ref = cast_volume(scene, grids, rays, {*o.check, chips, &expected});
     rep.check = check_frames(*o.check, record, expected, frame, ref);
+    rep.check->units = frame.unit_check;
   }
 
   if (o.compare_ideal && o.level != Level::kIdeal) {

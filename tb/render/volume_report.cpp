@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -67,16 +68,32 @@ std::string VolumeReport::text() const {
         "access (two on a fault): {:.3f} ms{}\n",
         ratio(t.accesses, t.resamples), ratio(t.page_faults, t.resamples), texram::kAccessNs,
         f.unit_seconds() * 1e3, f.chips.size() > 1 ? " (the slowest chip: they work at once)" : "");
+    const bool clocked = f.pieces > 0;
+    if (clocked) {
+      const uint64_t slowest = *std::max_element(f.chip_cycles.begin(), f.chip_cycles.end());
+      uint64_t cycles = 0;
+      for (uint64_t c : f.chip_cycles) cycles += c;
+      s += fmt::format(
+          "    clocked ({}): {} cycles in {} runs of the block, {:.4f} cycles a resample, {:.3f} "
+          "ms at {:.0f} ns a cycle{}\n",
+          engine, cycles, f.pieces, ratio(cycles, t.resamples), f.clocked_seconds() * 1e3,
+          texram::kAccessNs,
+          f.chips.size() > 1 ? fmt::format(" (the slowest chip's {} cycles)", slowest) : "");
+    }
     if (f.chips.size() > 1) {
-      s += fmt::format("    {:>4}  {:>9}  {:>9}  {:>10}  {:>10}  {:>11}  {:>8}  {:>9}\n", "chip",
-                       "holds", "owns", "resamples", "accesses", "page faults", "slow", "time ms");
+      s += fmt::format("    {:>4}  {:>9}  {:>9}  {:>10}  {:>10}  {:>11}  {:>8}  {:>9}{}\n", "chip",
+                       "holds", "owns", "resamples", "accesses", "page faults", "slow", "time ms",
+                       clocked ? fmt::format("  {:>10}  {:>9}", "cycles", "clocked ms") : "");
       for (size_t c = 0; c < f.chips.size(); ++c) {
         const host::Slab& sl = p.slabs[c];
         const VolumeCounters& k = f.chips[c];
-        s +=
-            fmt::format("    {:>4}  {:>9}  {:>9}  {:>10}  {:>10}  {:>11}  {:>8}  {:>9.3f}\n", c,
-                        plane_range(sl.begin, sl.end), plane_range(sl.own_begin, sl.own_end),
-                        k.resamples, k.accesses, k.page_faults, k.slow_accesses, k.seconds() * 1e3);
+        s += fmt::format(
+            "    {:>4}  {:>9}  {:>9}  {:>10}  {:>10}  {:>11}  {:>8}  {:>9.3f}{}\n", c,
+            plane_range(sl.begin, sl.end), plane_range(sl.own_begin, sl.own_end), k.resamples,
+            k.accesses, k.page_faults, k.slow_accesses, k.seconds() * 1e3,
+            clocked ? fmt::format("  {:>10}  {:>9.3f}", f.chip_cycles[c],
+                                  static_cast<double>(f.chip_cycles[c]) * texram::kAccessNs * 1e-6)
+                    : "");
       }
     }
   } else {
@@ -91,14 +108,28 @@ std::string VolumeReport::text() const {
       "  wall time: ray set-up {:.3f} s, unit {:.3f} s, compositing {:.3f} s, total {:.3f} s\n",
       f.setup_s, f.unit_s, f.composite_s, total_s);
   if (check) {
+    const std::optional<VolumePieceCheck>& u = check->units;
+    const std::string units =
+        u ? fmt::format(
+                "; unit by unit: {} runs of the block, {} outputs, {} memory requests and "
+                "the counters against {}",
+                u->pieces, u->outputs, u->requests, u->against)
+          : "";
     if (check->match()) {
-      s += fmt::format("  check: MATCH: {} = {}, all {} resamples bit-exact, and the counters\n",
-                       engine, check->against, check->compared);
+      s += fmt::format(
+          "  check: MATCH: {} = {}, all {} resamples bit-exact, and every chip's counters{}\n",
+          engine, check->against, check->compared, units);
     } else {
-      s += fmt::format("  check: MISMATCH: {} of {} resamples differ between {} and {}{}\n",
+      s += fmt::format("  check: MISMATCH: {} of {} resamples differ between {} and {}{}{}\n",
                        check->differing, check->compared, engine, check->against,
-                       check->counters_match ? "" : "; the counters differ");
+                       check->counters_match ? "" : "; the counters differ",
+                       u && !u->match() ? fmt::format("; {} of {} runs of the block differ",
+                                                      u->differing_pieces, u->pieces)
+                                        : "");
       for (const std::string& d : check->first) s += "    " + d + "\n";
+      if (u) {
+        for (const std::string& d : u->first) s += "    " + d + "\n";
+      }
     }
   }
   if (compare) {
@@ -129,6 +160,8 @@ std::string VolumeReport::json() const {
     const host::Slab& sl = f.plan.slabs[c];
     const VolumeCounters& k = f.chips[c];
     chips.push_back({{"holds", {sl.begin, sl.end}},
+                     {"rays", k.rays},
+                     {"cycles", c < f.chip_cycles.size() ? f.chip_cycles[c] : 0},
                      {"owns", {sl.own_begin, sl.own_end}},
                      {"resamples", k.resamples},
                      {"accesses", k.accesses},
@@ -155,7 +188,10 @@ std::string VolumeReport::json() const {
                {"slow_accesses", t.slow_accesses},
                {"accesses_per_resample", ratio(t.accesses, t.resamples)},
                {"page_faults_per_resample", ratio(t.page_faults, t.resamples)},
-               {"seconds", f.unit_seconds()}};
+               {"seconds", f.unit_seconds()},
+               {"clocked", f.pieces > 0},
+               {"runs", f.pieces},
+               {"clocked_seconds", f.clocked_seconds()}};
   j["host_work"] = nlohmann::json::array();
   for (const HostWork& w : host_work)
     j["host_work"].push_back({{"stage", w.stage}, {"reason", w.reason}});
@@ -165,6 +201,15 @@ std::string VolumeReport::json() const {
     j["check"] = {{"against", check->against},     {"compared", check->compared},
                   {"differing", check->differing}, {"counters_match", check->counters_match},
                   {"first", check->first},         {"match", check->match()}};
+    if (check->units) {
+      const VolumePieceCheck& u = *check->units;
+      j["check"]["units"] = {{"against", u.against},
+                             {"runs", u.pieces},
+                             {"outputs", u.outputs},
+                             {"requests", u.requests},
+                             {"differing_runs", u.differing_pieces},
+                             {"first", u.first}};
+    }
   }
   if (compare) {
     j["compare_ideal"] = {

@@ -19,7 +19,9 @@ struct VolumeCheckReport {
   uint64_t compared = 0, differing = 0;  // resamples
   bool counters_match = true;
   std::vector<std::string> first;  // the first differences, readable
-  bool match() const { return differing == 0 && counters_match; }
+  // hls, rtl: the unit-by-unit comparison of every piece (render/volume_engine_block.hpp).
+  std::optional<VolumePieceCheck> units;
+  bool match() const { return differing == 0 && counters_match && (!units || units->match()); }
 };
 
 struct VolumeReport {

@@ -63,7 +63,8 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
                   "Take the fragment records from a trace instead of the front end")
       ->check(CLI::ExistingFile);
   cmd->add_option("--inject-fault", a->options.inject_fault,
-                  "Flip a bit of fragment N's result (to see --check fail)");
+                  "Flip a bit of fragment N's result (to see --check fail); a volume scene at hls "
+                  "or rtl: of the value of chip 0's unit's output N");
   cmd->add_option("--frames", a->frames,
                   "A fly-over scene (a \"flyover\" section, render/flyover.hpp): the frames A-B "
                   "(default every frame of its path)");

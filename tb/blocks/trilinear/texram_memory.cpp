@@ -44,8 +44,12 @@ Counters page_counters(const texram::PageStats& s) {
           {"slow_accesses", s.slow_accesses}};
 }
 
-TexramMemory::TexramMemory(TextureOf texture_of, uint64_t seed, bool empty_accesses)
-    : texture_of_(std::move(texture_of)), empty_accesses_(empty_accesses), rng_(seed) {}
+TexramMemory::TexramMemory(TextureOf texture_of, uint64_t seed, bool empty_accesses,
+                           const texram::OpenPages& open_pages)
+    : texture_of_(std::move(texture_of)),
+      empty_accesses_(empty_accesses),
+      rng_(seed),
+      pages_(open_pages) {}
 
 void TexramMemory::drive(EnvPorts& ports) {
   if (!drawn_) {

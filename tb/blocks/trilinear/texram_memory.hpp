@@ -49,11 +49,13 @@ Counters page_counters(const texram::PageStats& stats);
 // schedule: an access whose voxels are all outside the volume still takes its period and is
 // one access of the page model; its response is garbage). A configuration item loads the
 // texture it names into the banks (the open pages stay open: the page model runs on across
-// textures, as golden's).
+// textures, as golden's). `open_pages`: the pages open at the start (a run that continues
+// another's: a render's volume unit in pieces); by default none.
 class TexramMemory : public Environment {
  public:
   using TextureOf = std::function<std::shared_ptr<const texram::TexramTexture>(const Txn& cfg)>;
-  TexramMemory(TextureOf texture_of, uint64_t seed, bool empty_accesses = false);
+  TexramMemory(TextureOf texture_of, uint64_t seed, bool empty_accesses = false,
+               const texram::OpenPages& open_pages = {});
 
   void configure(const Txn& cfg) override { texture_ = texture_of_(cfg); }
   void drive(EnvPorts& ports) override;

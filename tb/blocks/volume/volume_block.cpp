@@ -52,23 +52,13 @@ int64_t uniform(std::mt19937_64& rng, int64_t lo, int64_t hi) {
   return lo + static_cast<int64_t>(rng() % static_cast<uint64_t>(hi - lo + 1));
 }
 
-// The request of one access on the mem_req port: banks 0-3 as the plan reads them (address 0
-// where a bank idles, as the RTL drives it), banks 4-7 never.
-Txn request_of(const volume::Access& a) {
-  Txn t;
-  for (size_t b = 0; b < volume::kVolumeBanks; ++b) {
-    t.f[D::mem_req_en + b] = a.address[b].has_value();
-    t.f[D::mem_req_addr + b] = a.address[b].value_or(0);
-  }
-  return t;
-}
-
 // The golden unit over a run: a configuration names the volume and the unit's mode and W (the
 // page model runs on across volumes, as the memory's does); a ray gives its resamples, its
 // accesses the requests.
 class Golden : public Model {
  public:
-  explicit Golden(std::shared_ptr<const VolumeStore> store) : store_(std::move(store)) {}
+  Golden(std::shared_ptr<const VolumeStore> store, const texram::OpenPages& open)
+      : store_(std::move(store)), pages_(open) {}
   void configure(const Txn& cfg) override {
     setup_ = volume_setup_of(cfg);
     volume_ = store_->get(setup_);
@@ -82,13 +72,8 @@ class Golden : public Model {
       accesses.clear();
       const volume::Resample r =
           volume::resample(volume_->memory, setup_.config, m.position(), &pages_, &accesses);
-      Txn out;
-      out.f[D::out_value] = r.value;
-      for (size_t a = 0; a < 3; ++a)
-        out.f[D::out_grad + a] = bits(r.gradient[a], fmts::kVolumeGrad);
-      out.f[D::out_last] = m.index() + 1 == ray.count;
-      sink.output(out);
-      for (const volume::Access& a : accesses) sink.request(0, request_of(a));
+      sink.output(volume_output_item(r, m.index() + 1 == ray.count));
+      for (const volume::Access& a : accesses) sink.request(0, volume_request_item(a));
       ++resamples_;
     }
   }
@@ -161,6 +146,18 @@ std::shared_ptr<const StoredVolume> VolumeStore::get(const VolumeSetup& setup) c
   return v;
 }
 
+void VolumeStore::hold(const VolumeSetup& setup, const volume::VoxelGrid& grid) {
+  VolumeSetup key = setup;
+  key.config = {};
+  auto v = std::make_shared<StoredVolume>(StoredVolume{volume::load(grid), nullptr});
+  auto image = std::make_shared<texram::TexramTexture>();
+  for (size_t b = 0; b < volume::kVolumeBanks; ++b) image->banks[b] = v->memory.banks[b];
+  v->image = image;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  std::erase_if(cache_, [&key](const auto& kv) { return kv.first == key; });
+  cache_.emplace_back(key, v);
+}
+
 // ---- Items -----------------------------------------------------------------------------------
 
 Txn volume_cfg_item(const VolumeSetup& s) {
@@ -213,6 +210,23 @@ Ray volume_ray_of(const Txn& t) {
   return r;
 }
 
+Txn volume_output_item(const volume::Resample& r, bool last) {
+  Txn out;
+  out.f[D::out_value] = r.value;
+  for (size_t a = 0; a < 3; ++a) out.f[D::out_grad + a] = bits(r.gradient[a], fmts::kVolumeGrad);
+  out.f[D::out_last] = last;
+  return out;
+}
+
+Txn volume_request_item(const volume::Access& a) {
+  Txn t;
+  for (size_t b = 0; b < volume::kVolumeBanks; ++b) {
+    t.f[D::mem_req_en + b] = a.address[b].has_value();
+    t.f[D::mem_req_addr + b] = a.address[b].value_or(0);
+  }
+  return t;
+}
+
 volume::Resample volume_resample_of(const Txn& o) {
   volume::Resample r;
   r.value = static_cast<uint8_t>(o.f[D::out_value]);
@@ -224,7 +238,10 @@ volume::Resample volume_resample_of(const Txn& o) {
 // ---- The block -------------------------------------------------------------------------------
 
 VolumeBlock::VolumeBlock(const BlockOptions& options)
-    : DescribedBlockOf(D::table()), options_(options), store_(std::make_shared<VolumeStore>()) {
+    : VolumeBlock(options, std::make_shared<VolumeStore>()) {}
+
+VolumeBlock::VolumeBlock(const BlockOptions& options, std::shared_ptr<const VolumeStore> store)
+    : DescribedBlockOf(D::table()), options_(options), store_(std::move(store)) {
   if (options.vol_mode && (*options.vol_mode < 0 || *options.vol_mode > 1)) {
     throw std::invalid_argument("volume: mode " + std::to_string(*options.vol_mode) +
                                 " (0 value, 1 raw)");
@@ -479,13 +496,15 @@ std::vector<Txn> VolumeBlock::directed_items() const {
   return items;
 }
 
-std::unique_ptr<Model> VolumeBlock::golden() const { return std::make_unique<Golden>(store_); }
+std::unique_ptr<Model> VolumeBlock::golden() const {
+  return std::make_unique<Golden>(store_, open_pages_);
+}
 
 std::unique_ptr<Environment> VolumeBlock::environment(uint64_t seed) const {
   std::shared_ptr<const VolumeStore> store = store_;
   return std::make_unique<TexramMemory>(
       [store](const Txn& cfg) { return store->get(volume_setup_of(cfg))->image; }, seed,
-      /*empty_accesses=*/true);
+      /*empty_accesses=*/true, open_pages_);
 }
 
 // ---- Coverage --------------------------------------------------------------------------------

@@ -33,9 +33,11 @@
 #include "blocks/volume/volume_ports.hpp"
 #include "harness/describe.hpp"
 #include "harness/described_block.hpp"
+#include "texram/page_model.hpp"
 #include "texram/texture.hpp"
 #include "volume/marcher.hpp"
 #include "volume/unit.hpp"
+#include "volume/voxels.hpp"
 
 TMU_DESCRIBE(volume)
 
@@ -65,6 +67,9 @@ class VolumeStore {
  public:
   // Throws std::invalid_argument (VolumeGeometry's) for a size the banks cannot hold.
   std::shared_ptr<const StoredVolume> get(const VolumeSetup& setup) const;
+  // From now on `setup` names these voxels (of setup.size) instead of its pattern: a render's
+  // chip, whose data is the host's (render/volume_engine_block.hpp). Throws as get() does.
+  void hold(const VolumeSetup& setup, const volume::VoxelGrid& grid);
 
  private:
   mutable std::mutex mutex_;
@@ -74,6 +79,12 @@ class VolumeStore {
 class VolumeBlock : public DescribedBlockOf<VolumeBlock> {
  public:
   explicit VolumeBlock(const BlockOptions& options = {});
+  // Over a given store (one that holds a render's voxels).
+  VolumeBlock(const BlockOptions& options, std::shared_ptr<const VolumeStore> store);
+
+  // The pages open in the memory (and golden's page model) when a run starts: a run that
+  // continues another (a render's pieces) counts as the one long run would. None by default.
+  void set_open_pages(const texram::OpenPages& open) { open_pages_ = open; }
 
   std::vector<Txn> setup_items() const override;
   TMU_BLOCK_PIECES;
@@ -90,6 +101,7 @@ class VolumeBlock : public DescribedBlockOf<VolumeBlock> {
 
   BlockOptions options_;
   std::shared_ptr<const VolumeStore> store_;
+  texram::OpenPages open_pages_{};
   VolumeSetup first_;
   // cover() sees the items in order: the setup in effect.
   mutable size_t cover_next_ = 0;
@@ -106,5 +118,10 @@ Txn volume_ray_item(const volume::Ray& ray);
 volume::Ray volume_ray_of(const Txn& item);
 // An output's resample (the gradient sign-extended) and the ray's last flag.
 volume::Resample volume_resample_of(const Txn& output);
+// The output golden gives for a resample (`last` on its ray's last).
+Txn volume_output_item(const volume::Resample& resample, bool last);
+// The request of one access on the mem_req port: banks 0-3 as the plan reads them (address 0
+// where a bank idles, as the RTL drives it), banks 4-7 never.
+Txn volume_request_item(const volume::Access& access);
 
 }  // namespace tmu::tb
