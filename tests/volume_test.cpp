@@ -458,6 +458,52 @@ TEST(VolumeUnitTest, ValueModeReadsTwiceRawModeEightTimes) {
   }
 }
 
+// A run cut into pieces counts as the one long run when each piece's page model starts with the
+// pages the last one left open (what the renderer's hls and rtl engines do between runs of the
+// block, render/volume_engine_block.hpp); starting each piece with no page open counts more.
+TEST(VolumeUnitTest, APageModelFromOpenPagesContinuesTheLongRun) {
+  const VoxelGrid g = random_grid(40, 30, 50, 3);
+  const VolumeMemory mem = load(g);
+  std::vector<Access> accesses;
+  std::mt19937_64 rng(5);
+  for (int r = 0; r < 60; ++r) {
+    const auto u = [&rng](double lo, double hi) {
+      return lo + (hi - lo) * static_cast<double>(rng() >> 11) * 0x1p-53;
+    };
+    const Ray ray{{quantise(u(0, 39)), quantise(u(0, 29)), quantise(u(0, 49))},
+                  {quantise(u(-1, 1)), quantise(u(-1, 1)), quantise(u(-1, 1))},
+                  20};
+    cast(mem, {Mode::kRaw, 8}, ray, nullptr, &accesses);
+  }
+  const auto banks = [](const Access& a) {
+    std::array<std::optional<uint32_t>, 8> b{};
+    std::copy(a.address.begin(), a.address.end(), b.begin());
+    return b;
+  };
+  texram::PageModel whole;
+  for (const Access& a : accesses) whole.access(banks(a));
+  for (size_t piece : {1u, 7u, 97u, 1000u}) {
+    texram::PageStats carried, fresh;
+    texram::OpenPages open{};
+    for (size_t i = 0; i < accesses.size(); i += piece) {
+      texram::PageModel p(open), q;
+      for (size_t k = i; k < std::min(i + piece, accesses.size()); ++k) {
+        p.access(banks(accesses[k]));
+        q.access(banks(accesses[k]));
+      }
+      open = p.open_pages();
+      for (auto [sum, part] : {std::pair{&carried, p.stats()}, std::pair{&fresh, q.stats()}}) {
+        sum->accesses += part.accesses;
+        sum->bank_reads += part.bank_reads;
+        sum->page_faults += part.page_faults;
+        sum->slow_accesses += part.slow_accesses;
+      }
+    }
+    EXPECT_EQ(carried, whole.stats()) << "pieces of " << piece;
+    EXPECT_GT(fresh.page_faults, whole.stats().page_faults) << "pieces of " << piece;
+  }
+}
+
 // blend() is what a unit with a memory port computes from the bytes its accesses brought back
 // (the hls model): the same as resample() whatever an idle bank delivers; it rejects a
 // location without the mode's accesses.

@@ -147,6 +147,12 @@ std::shared_ptr<const StoredVolume> VolumeStore::get(const VolumeSetup& setup) c
 }
 
 void VolumeStore::hold(const VolumeSetup& setup, const volume::VoxelGrid& grid) {
+  if (setup.size != std::array<uint32_t, 3>{grid.nx, grid.ny, grid.nz}) {
+    throw std::invalid_argument(
+        fmt::format("volume: a store's {} x {} x {} voxels held for a size "
+                    "of {} x {} x {}",
+                    grid.nx, grid.ny, grid.nz, setup.size[0], setup.size[1], setup.size[2]));
+  }
   VolumeSetup key = setup;
   key.config = {};
   auto v = std::make_shared<StoredVolume>(StoredVolume{volume::load(grid), nullptr});
