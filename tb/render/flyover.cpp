@@ -397,10 +397,9 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
   }
   const Flyover fo = load_flyover(scene_path, o.out_dir);
   range = frames_of_path(range, fo.frames());
-  const int last = range.last;
   fs::create_directories(o.out_dir);  // only once the scene and the range are good
   make_virtual_texture(fo, log);
-  FlyoverRun run = run_flyover(fo, o.level, range.first, last);
+  FlyoverRun run = run_flyover(fo, o.level, range.first, range.last);
   for (size_t f = 0; f < run.images.size(); ++f) {
     write_image((fs::path(o.out_dir) / fmt::format("flyover.frame-{:04}.png", run.frames[f].frame))
                     .string(),
@@ -437,7 +436,7 @@ int render_flyover(const std::string& scene_path, const RenderOptions& o, FrameR
   std::string text = fmt::format(
       "flyover {}: {} frames ({}..{}), {}x{}, engine {}\n  virtual texture {} ({} x {}), tiles of "
       "{} x {} for levels 0..{}, {} substitution, {}\n",
-      scene_path, run.frames.size(), range.first, last, fo.width, fo.height, name(o.level),
+      scene_path, run.frames.size(), range.first, range.last, fo.width, fo.height, name(o.level),
       fo.texture, 1 << fo.config.log2_virtual, 1 << fo.config.log2_virtual,
       1 << fo.config.log2_tile, 1 << fo.config.log2_tile, clipped - 1,
       fo.config.substitution == clipmap::Substitution::kPerTap ? "per-tap" : "per-sample",
