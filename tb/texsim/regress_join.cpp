@@ -40,7 +40,9 @@ std::vector<GroupJoin> join_groups(const RegressOptions& options,
   }
   std::vector<GroupJoin> out;
   for (const auto& [group, tests] : groups) {
-    GroupJoin j{group, tests.front()->test.join};
+    GroupJoin j;
+    j.group = group;
+    j.join = tests.front()->test.join;
     std::vector<fs::path> parts;
     for (const RegressResult* r : tests) {
       if (!r->passed()) {
