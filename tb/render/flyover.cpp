@@ -370,10 +370,11 @@ FrameRange parse_frame_range(const std::string& text) {
     } catch (const std::exception&) {
     }
     if (part.empty() || end != part.size() || n < 0)
-      throw InputError("--frames", "", "expected A or A-B (whole numbers), got '" + text + "'");
+      throw InputError("--frames", "",
+                       "expected A, A-B or A:B (whole numbers), got '" + text + "'");
     return n;
   };
-  const size_t dash = text.find('-');
+  const size_t dash = text.find_first_of("-:");
   FrameRange r;
   r.first = whole(text.substr(0, dash));
   r.last = dash == std::string::npos ? r.first : whole(text.substr(dash + 1));
