@@ -15,6 +15,7 @@
 #include "common/image.hpp"
 #include "render/chip_stage.hpp"
 #include "render/video_feed.hpp"
+#include "render/video_mipgen.hpp"
 #include "render/video_render.hpp"
 #include "scene/scene.hpp"
 #include "texram/mipgen_stream.hpp"
@@ -233,6 +234,9 @@ TEST(VideoRenderTest, RtlEqualsGoldenOnTheChipsEveryFrame) {
         EXPECT_GT(f.render.check->compared, 100u);
         EXPECT_GT(f.feeds[0].sampler_lost, 0u);
         EXPECT_EQ(f.feeds[0].sampler_lost, f.feeds[0].write_cycles + f.feeds[0].read_cycles);
+        // The mipgen block at rtl wrote the frame's every cell as the golden path did.
+        EXPECT_TRUE(f.mipgen[0].match());
+        EXPECT_GT(f.mipgen[0].writes, 64u * 64u * static_cast<uint64_t>(planes));
       }
       EXPECT_TRUE(fs::exists(dir / "out" / "video.frame-0001.png"));
       EXPECT_TRUE(fs::exists(dir / "out" / "video.report.json"));
@@ -240,6 +244,28 @@ TEST(VideoRenderTest, RtlEqualsGoldenOnTheChipsEveryFrame) {
     }
   }
   fs::remove_all(dir);
+}
+
+// The mipgen block's comparison can fail: one cell of the front buffer changed is one write that
+// differs.
+TEST(VideoRenderTest, TheMipgenBlockCheckCatchesABrokenBuffer) {
+  host::Video v;
+  v.pattern = "rings";
+  v.planes = 4;
+  v.width = 32;
+  v.height = 16;
+  VideoFeed feed(v, 0, 1);
+  feed.feed(0);
+  auto buffers = std::make_shared<VideoBuffers>(*feed.buffers());
+  EXPECT_TRUE(check_video_mipgen(v, 0, *buffers, Level::kRtl).match());
+  auto broken = std::make_shared<texram::TexramTexture>(
+      *buffers->buffers[static_cast<size_t>(buffers->front)]);
+  const texram::BankCell c = broken->geometry.cell(1, 3, 2, 2);
+  broken->banks[c.bank][c.address] ^= 1;
+  buffers->buffers[static_cast<size_t>(buffers->front)] = broken;
+  const VideoMipgenCheck m = check_video_mipgen(v, 0, *buffers, Level::kRtl);
+  EXPECT_EQ(m.differing, 1u);
+  EXPECT_FALSE(m.match());
 }
 
 TEST(VideoRenderTest, AnInjectedFaultIsCaughtOnEveryFrame) {

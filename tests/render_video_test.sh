@@ -22,6 +22,8 @@ fi
 shown=$(grep -E '^ +[0-9]+ screen ' <<<"$out" | awk '{print $1 "=" $3}' | tr '\n' ' ')
 [[ $shown == "1=1 2=2 " ]] && pass "render f shows video frame f ($shown)" ||
   fail "frames shown: '$shown'"
+grep -q "mipgen: the block at rtl over every rendered frame: [0-9]* writes, MATCH" <<<"$out" &&
+  pass "the mipgen block at rtl writes every frame's front buffer" || fail "no mipgen match"
 grep -q "host work:" <<<"$out" && grep -q "video stream of screen" <<<"$out" &&
   pass "the golden video stream is named as host work" || fail "no host work named"
 

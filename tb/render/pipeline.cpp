@@ -129,7 +129,9 @@ Pipeline::Pipeline(const host::Scene& scene, Level level, int chips, const Video
                " (000 §11-12: video port, mipmap generator, page-row buffers and arbiter, the "
                "swap)",
            "the golden VideoMap on the host writes the chip's memory: the video unit joining "
-           "video_port, mipgen and video_rows to the chip is not in hardware yet (docs/video.md)"});
+           "video_port, mipgen and video_rows to the chip is not in hardware yet; the mipgen "
+           "block runs at the engine beside it over each frame, compared cell by cell "
+           "(render/video_mipgen, docs/video.md)"});
       textures_.push_back(std::move(mt));
       continue;
     }

@@ -113,6 +113,11 @@ int render_video(const std::string& scene_path, const RenderOptions& o, FrameRan
       fr.front.push_back((*state)[videos[i]]->front);
     }
     if (f < range.first) continue;
+    for (size_t i = 0; i < videos.size(); ++i) {
+      fr.mipgen.push_back(
+          check_video_mipgen(*scene.materials[videos[i]].video, f, *(*state)[videos[i]], o.level));
+      if (!fr.mipgen.back().match()) code = 1;
+    }
     // The chip's DRF reads the front buffer at the base the VideoMap's swap wrote.
     {
       const Pipeline frame(scene, Level::kGolden, o.chips, state.get());

@@ -8,8 +8,10 @@
 // so render f samples video frame f's pyramid, complete, through the DRF's base as the swap left
 // it; the other buffer holds frame f - 1, where frame f + 1 will be written. Frames A..B are
 // rendered (render_scene at the engine, through the chips; --check compares each frame bit for
-// bit), frames before A only fed. At hls and rtl the chip samples as hardware; the video stream
-// stays golden on the host and the report names it (host work).
+// bit), frames before A only fed. At hls and rtl the chip samples as hardware, and the mipgen
+// block runs at the engine over each rendered frame, its writes compared with the front buffer's
+// cells (render/video_mipgen); the rest of the video stream (port, row buffers, swap) stays golden
+// on the host and the report names it (host work).
 //
 // Writes OUT/video.frame-NNNN.png, each frame's render report (video.frame-NNNN.report.*) and
 // OUT/video.report.{json,txt}: per frame the video frame shown, its buffer, its cycles (first item,
@@ -24,6 +26,7 @@
 #include "render/flyover.hpp"
 #include "render/render.hpp"
 #include "render/video_feed.hpp"
+#include "render/video_mipgen.hpp"
 #include "scene/scene.hpp"
 
 namespace tmu::render {
@@ -37,6 +40,8 @@ struct VideoFrameReport {
   std::vector<VideoFrameFeed> feeds;  // per video material, what feeding its frame did
   std::vector<int> shown;             // per video material, the video frame the render sees
   std::vector<int> front;             // ... and the buffer the DRF's base names
+  // ... and the mipgen block at the engine over that frame against the front buffer's cells
+  std::vector<VideoMipgenCheck> mipgen;
   RenderReport render;
 };
 
@@ -53,8 +58,8 @@ struct VideoRenderReport {
 };
 
 // Renders frames range.first..range.last (last -1: every frame of the video) into out_dir.
-// Returns 0, or 1 when a checked frame mismatched; throws InputError on bad input (before writing
-// anything).
+// Returns 0, or 1 when a checked frame or a mipgen comparison mismatched; throws InputError on bad
+// input (before writing anything).
 int render_video(const std::string& scene_path, const RenderOptions& options, FrameRange range,
                  std::ostream& log, VideoRenderReport* report = nullptr);
 

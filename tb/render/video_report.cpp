@@ -25,11 +25,21 @@ std::string verdict(const RenderReport& r) {
   return r.check->match() ? "MATCH" : fmt::format("MISMATCH ({})", r.check->differing);
 }
 
+// "8190 writes =", or "8190 writes, 3 !=" (the mipgen block's writes against the front buffer).
+std::string mipgen_cell(const VideoMipgenCheck& m) {
+  if (m.writes != m.golden_writes) return fmt::format("{} of {} writes", m.writes, m.golden_writes);
+  return m.differing ? fmt::format("{} writes, {} !=", m.writes, m.differing)
+                     : fmt::format("{} writes =", m.writes);
+}
+
 }  // namespace
 
 bool VideoRenderReport::match() const {
   for (const VideoFrameReport& f : frames) {
     if (f.render.check && !f.render.check->match()) return false;
+    for (const VideoMipgenCheck& m : f.mipgen) {
+      if (!m.match()) return false;
+    }
   }
   return true;
 }
@@ -48,27 +58,31 @@ std::string VideoRenderReport::text() const {
   s += "  the time: frame f's pixel pass starts once video frame f has been fed (at the video's "
        "rate, the sampler\n  wanting every cycle) and swapped in; the other buffer holds frame "
        "f - 1 (cycles of 30 ns)\n";
-  s += fmt::format(
-      "  {:>5} {:<10} {:>6} {:>6} {:>10} {:>10} {:>10} {:>9} {:>8} {:>7} {:>7} {:>6} "
-      "{:>11}  {}\n",
-      "frame", "video", "shown", "buffer", "first item", "last item", "swap", "fed", "lost",
-      "lost %", "writes", "reads", "chip cycles", "check");
+  // One row a frame and video: frame, video, shown, buffer, cycles (first item, last item,
+  // swap, fed), sampler lost (cycles, %), writes, reads, mipgen, chip cycles, check.
+  constexpr auto kRow =
+      "  {:>5} {:<8} {:>5} {:>6} {:>10} {:>10} {:>10} {:>9} {:>6} {:>7} {:>6} {:>5} {:>17} {:>11}  "
+      "{}\n";
+  s += fmt::format(kRow, "frame", "video", "shown", "buffer", "first item", "last item", "swap",
+                   "fed", "lost", "lost %", "writes", "reads", "mipgen = front", "chip cycles",
+                   "check");
   for (const VideoFrameReport& f : frames) {
     for (size_t i = 0; i < f.feeds.size(); ++i) {
       const VideoFrameFeed& v = f.feeds[i];
-      const std::string name = videos[i].substr(0, videos[i].find(':'));
-      s += fmt::format(
-          "  {:>5} {:<10} {:>6} {:>6} {:>10} {:>10} {:>10} {:>9} {:>8} {:>7.3f} {:>7} {:>6} {:>11} "
-          " "
-          "{}\n",
-          f.frame, name, f.shown[i], f.front[i], v.begin_cycle, v.end_cycle, v.swap_cycle, v.cycles,
-          v.sampler_lost, percent(v.sampler_lost, v.sampler_wanted), v.write_accesses,
-          v.read_accesses, i == 0 ? chip_cycles(f.render) : 0, i == 0 ? verdict(f.render) : "");
+      s += fmt::format(kRow, f.frame, videos[i].substr(0, videos[i].find(':')), f.shown[i],
+                       f.front[i], v.begin_cycle, v.end_cycle, v.swap_cycle, v.cycles,
+                       v.sampler_lost,
+                       fmt::format("{:.3f}", percent(v.sampler_lost, v.sampler_wanted)),
+                       v.write_accesses, v.read_accesses, mipgen_cell(f.mipgen[i]),
+                       i == 0 ? chip_cycles(f.render) : 0, i == 0 ? verdict(f.render) : "");
     }
   }
-  s += "  (fed: the cycles feeding the frame took, its items at the video's rate and then until "
-       "its swap; lost: the\n  sampler's cycles the writes and reads took, faults included; "
-       "writes, reads: row-buffer accesses)\n";
+  s += fmt::format(
+      "  (fed: the cycles feeding the frame took, its items at the video's rate and then until "
+      "its swap; lost: the\n  sampler's cycles the writes and reads took, faults included; "
+      "writes, reads: row-buffer accesses; mipgen =\n  front: the mipgen block at {} over the "
+      "frame, its writes equal to the front buffer's cells)\n",
+      engine);
   if (!frames.empty() && !frames.front().render.host_work.empty()) {
     s += "  host work:\n";
     for (const HostWork& w : frames.front().render.host_work)
@@ -81,7 +95,18 @@ std::string VideoRenderReport::text() const {
     checked = true;
     compared += f.render.check->compared;
   }
-  if (checked) {
+  uint64_t mipgen_writes = 0, mipgen_differing = 0;
+  for (const VideoFrameReport& f : frames) {
+    for (const VideoMipgenCheck& m : f.mipgen) {
+      mipgen_writes += m.writes;
+      mipgen_differing += m.differing + (m.writes != m.golden_writes);
+    }
+  }
+  s += fmt::format(
+      "  mipgen: the block at {} over every rendered frame: {} writes, {}\n", engine, mipgen_writes,
+      mipgen_differing ? fmt::format("MISMATCH: {} differ from the front buffer", mipgen_differing)
+                       : "MATCH: every one the front buffer's cell");
+  if (checked || !match()) {
     s += match()
              ? fmt::format(
                    "  check: MATCH: {} = {} on every frame ({} frames, {} fragments "
@@ -125,6 +150,12 @@ std::string VideoRenderReport::json() const {
                               {"read_cycles", v.read_cycles},
                               {"lost_writes", v.lost_writes},
                               {"max_write_latency", v.max_latency}});
+    }
+    for (size_t i = 0; i < f.mipgen.size(); ++i) {
+      const VideoMipgenCheck& m = f.mipgen[i];
+      fj["videos"][i]["mipgen"] = {
+          {"engine", engine},         {"writes", m.writes}, {"golden_writes", m.golden_writes},
+          {"differing", m.differing}, {"cycles", m.cycles}, {"match", m.match()}};
     }
     fj["chip_cycles"] = chip_cycles(f.render);
     fj["files"] = f.render.files;
