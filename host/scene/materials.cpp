@@ -186,7 +186,8 @@ Material parse_material(const JsonNode& node, const std::string& name, const std
                    "procedural",  "tau",
                    "order",       "lod",
                    "video"});
-  if (node.has("video") == node.has("texture")) node.fail("needs one of the keys texture, video");
+  if (node.has("video") && node.has("texture"))
+    node.at("video").fail("a material has a texture or a video, not both");
   if (auto video = node.find("video")) {
     m.video = parse_video(*video, folder);
     // The video's frames are the texture: its size for the rasterizer's uv scale, never loaded
