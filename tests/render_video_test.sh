@@ -22,6 +22,13 @@ fi
 shown=$(grep -E '^ +[0-9]+ screen ' <<<"$out" | awk '{print $1 "=" $3}' | tr '\n' ' ')
 [[ $shown == "1=1 2=2 " ]] && pass "render f shows video frame f ($shown)" ||
   fail "frames shown: '$shown'"
+# Frame 2 alone (frames 0..1 fed, not rendered) is frame 2 of the range.
+if render "$scene" --engine golden --chips 1 --frames 2 --out "$work/alone" >/dev/null &&
+  cmp -s "$work/a/video.frame-0002.png" "$work/alone/video.frame-0002.png"; then
+  pass "frame 2 alone = frame 2 after frame 1"
+else
+  fail "frame 2 alone differs"
+fi
 grep -q "mipgen: the block at rtl over every rendered frame: [0-9]* writes, MATCH" <<<"$out" &&
   pass "the mipgen block at rtl writes every frame's front buffer" || fail "no mipgen match"
 grep -q "host work:" <<<"$out" && grep -q "video stream of screen" <<<"$out" &&

@@ -63,7 +63,11 @@ glm::ivec2 frame_file_size(const JsonNode& node, const std::string& path, int k)
 
 }  // namespace
 
-std::string video_file(const Video& video, int k) { return number_into(video.files, k); }
+// The number goes in the file's name (its folder may hold any '%').
+std::string video_file(const Video& video, int k) {
+  const std::filesystem::path p(video.files);
+  return (p.parent_path() / number_into(p.filename().string(), k)).string();
+}
 
 Video parse_video(const JsonNode& node, const std::string& folder) {
   node.expect_object();
@@ -82,8 +86,11 @@ Video parse_video(const JsonNode& node, const std::string& folder) {
     v.source = Video::Source::kFiles;
     const JsonNode files = node.at("files");
     const std::string pattern = files.string();
-    if (!number_field(pattern))
-      files.fail("needs one %d or %0Nd (N 1..9) where the frame number goes, e.g. clip-%04d.png");
+    if (!number_field(std::filesystem::path(pattern).filename().string())) {
+      files.fail(
+          "needs one %d or %0Nd (N 1..9) in the file's name where the frame number goes, e.g. "
+          "images/clip-%04d.png");
+    }
     const std::filesystem::path p(pattern);
     v.files = p.is_absolute() ? pattern : (std::filesystem::path(folder) / p).string();
   }

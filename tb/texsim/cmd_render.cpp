@@ -27,7 +27,9 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
       "fragment goes through the units its material's chain calls for, at the chosen model level.\n"
       "Writes OUT/render.png (and render.exr for ideal) and OUT/render.report.{json,txt}.\n"
       "A volume scene (a \"volume\" section) is ray-cast through the volume unit (000 §13) at "
-      "ideal or golden.");
+      "ideal or golden.\n"
+      "A scene with a video map (a material's \"video\", 000 §11-12) renders with --chips N as "
+      "frames: OUT/video.frame-NNNN.png\nand OUT/video.report.{json,txt} (docs/video.md).");
   struct Args {
     std::string scene, engine = "golden", check, compare, tile, frames;
     bool waveform = false, no_progress = false;
