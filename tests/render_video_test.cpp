@@ -34,11 +34,11 @@ fs::path temp_dir(const std::string& name) {
 }
 
 // A small scene: a video on a turned quad, a checker floor beside it on the same chip.
-std::string scene_text(const std::string& video) {
+std::string scene_text(const std::string& video, const std::string& extra = "") {
   return fmt::format(R"({{
   "camera": {{"position": [0, 0.3, 2.2], "target": [0, 0, 0], "up": [0, 1, 0], "fov": 45, "resolution": [32, 24]}},
   "materials": {{
-    "screen": {{"video": {}}},
+    "screen": {{"video": {}{}}},
     "floor": {{"texture": {{"pattern": "checker", "size": [32, 32], "cell": 4}}}}
   }},
   "objects": [
@@ -46,7 +46,7 @@ std::string scene_text(const std::string& video) {
     {{"type": "plane", "size": [4, 4], "material": "floor", "transform": {{"translate": [0, -0.7, 0]}}}}
   ]
 }})",
-                     video);
+                     video, extra);
 }
 
 std::string generated(bool interlaced, int planes, int frames = 3, int side = 64) {
@@ -55,9 +55,9 @@ std::string generated(bool interlaced, int planes, int frames = 3, int side = 64
       side, side, interlaced ? "true" : "false", planes, frames);
 }
 
-fs::path write_scene(const fs::path& dir, const std::string& video) {
+fs::path write_scene(const fs::path& dir, const std::string& video, const std::string& extra = "") {
   const fs::path p = dir / "scene.json";
-  std::ofstream(p) << scene_text(video);
+  std::ofstream(p) << scene_text(video, extra);
   return p;
 }
 
@@ -242,6 +242,35 @@ TEST(VideoRenderTest, RtlEqualsGoldenOnTheChipsEveryFrame) {
       EXPECT_TRUE(fs::exists(dir / "out" / "video.report.json"));
       EXPECT_NE(log.str().find("host work"), std::string::npos);
     }
+  }
+  fs::remove_all(dir);
+}
+
+// A video is the texture DRF of a chain like any texture: after a bump map's emit DRF, before an
+// environment; the chain is on the chip (its DRFs) and rtl = golden.
+TEST(VideoRenderTest, AVideoInAChainWithABumpMapOrAnEnvironment) {
+  const fs::path dir = temp_dir("chain");
+  for (const std::string extra :
+       {R"(, "bump": {"heights": {"pattern": "noise"}, "depth": 2})",
+        R"(, "environment": {"map": "sphere", "size": 128}, "reflectance": 0.3)"}) {
+    SCOPED_TRACE(extra);
+    const fs::path scene = write_scene(dir, generated(true, 4, 1), extra);
+    RenderOptions o;
+    o.level = Level::kRtl;
+    o.check = Level::kGolden;
+    o.chips = 1;
+    o.progress = false;
+    o.out_dir = (dir / "out").string();
+    std::ostringstream log;
+    VideoRenderReport rep;
+    EXPECT_EQ(render_video(scene.string(), o, {0, 0}, log, &rep), 0) << log.str();
+    ASSERT_EQ(rep.frames.size(), 1u);
+    EXPECT_EQ(rep.frames[0].render.chips[0], extra.find("bump") != std::string::npos
+                                                 ? "screen: chip 0, DRF 1 | 2 3"
+                                                 : "screen: chip 0, DRF 1 2");
+    // With a bump map: the emit DRF, then the diffuse shading map, then the texture.
+    EXPECT_EQ(rep.drfs[0], extra.find("bump") != std::string::npos ? 3 : 1);
+    EXPECT_TRUE(rep.match());
   }
   fs::remove_all(dir);
 }

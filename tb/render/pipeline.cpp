@@ -132,6 +132,7 @@ Pipeline::Pipeline(const host::Scene& scene, Level level, int chips, const Video
            "video_port, mipgen and video_rows to the chip is not in hardware yet; the mipgen "
            "block runs at the engine beside it over each frame, compared cell by cell "
            "(render/video_mipgen, docs/video.md)"});
+      if (mat.uses_normal()) mt.effects = build_effect_maps(scene, mat);  // the rest of its chain
       textures_.push_back(std::move(mt));
       continue;
     }
