@@ -91,7 +91,7 @@ struct Video {
   std::string files;    // kFiles: the resolved path with one %d or %0Nd for the frame number
   int width = 64, height = 64;  // level-0 texels, powers of two up to 512
   bool interlaced = false;      // field 1 (even lines) then field 2 (odd lines)
-  int planes = 1;               // 1 (luminance) or 4 (R G B A)
+  int planes = 4;               // 1 (luminance) or 4 (R G B A, as a material's default rgba)
   int frames = 1;               // frames 0 .. frames - 1
   double fps = 30;              // the port's rate: width x height x fps texels a second
 };

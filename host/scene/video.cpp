@@ -94,7 +94,6 @@ Video parse_video(const JsonNode& node, const std::string& folder) {
     const std::filesystem::path p(pattern);
     v.files = p.is_absolute() ? pattern : (std::filesystem::path(folder) / p).string();
   }
-  v.planes = 4;  // R G B A, as a material's default configuration rgba
   if (auto planes = node.find("planes")) {
     v.planes = static_cast<int>(planes->integer(1, 4));
     if (v.planes != 1 && v.planes != 4) planes->fail("must be 1 (luminance) or 4 (R G B A)");
