@@ -8,7 +8,9 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/image.hpp"
 #include "render/chip_stage.hpp"
+#include "render/contact_sheet.hpp"
 #include "render/pipeline.hpp"
 
 namespace tmu::render {
@@ -81,6 +83,7 @@ int render_video(const std::string& scene_path, const RenderOptions& o, FrameRan
   rep.chips = o.chips;
   rep.first = range.first;
   rep.last = range.last;
+  rep.out_dir = o.out_dir;
   // The chips' placement (the same every frame: it depends on sizes only) gives each video's base
   // and DRF, which the VideoMap's swaps then write.
   std::vector<VideoFeed> feeds;
@@ -138,6 +141,11 @@ int render_video(const std::string& scene_path, const RenderOptions& o, FrameRan
   }
 
   const std::filesystem::path dir(o.out_dir);
+  // The contact sheet from the frames as written (PNG is lossless; render_scene keeps no image).
+  std::vector<ImageRgb8> pictures;
+  for (int f = range.first; f <= range.last; ++f)
+    pictures.push_back(read_image((dir / fmt::format("video.frame-{:04d}.png", f)).string()));
+  write_image((dir / "video.contact.png").string(), contact_sheet(pictures));
   write_file_atomically((dir / "video.report.json").string(), rep.json());
   const std::string text = rep.text();
   write_file_atomically((dir / "video.report.txt").string(), text);

@@ -13,10 +13,10 @@
 // cells (render/video_mipgen); the rest of the video stream (port, row buffers, swap) stays golden
 // on the host and the report names it (host work).
 //
-// Writes OUT/video.frame-NNNN.png, each frame's render report (video.frame-NNNN.report.*) and
-// OUT/video.report.{json,txt}: per frame the video frame shown, its buffer, its cycles (first item,
-// last item, swap), the sampler cycles lost to the video's writes and reads, the chip's cycles and
-// the check's verdict.
+// Writes OUT/video.frame-NNNN.png, each frame's render report (video.frame-NNNN.report.*), the
+// frames side by side (video.contact.png) and OUT/video.report.{json,txt}: per frame the video
+// frame shown, its buffer, its cycles (first item, last item, swap), the sampler cycles lost to the
+// video's writes and reads, the chip's cycles and the check's verdict.
 #pragma once
 
 #include <iosfwd>
@@ -46,7 +46,7 @@ struct VideoFrameReport {
 };
 
 struct VideoRenderReport {
-  std::string scene, engine;
+  std::string scene, engine, out_dir;
   int chips = 0, first = 0, last = 0;
   std::vector<std::string> videos;  // per video material: "screen: 64x64 generated bars, ..."
   std::vector<uint32_t> bases;      // per video material: buffer 0's cell in its chip's banks

@@ -95,6 +95,10 @@ std::string VideoRenderReport::text() const {
     checked = true;
     compared += f.render.check->compared;
   }
+  s += fmt::format(
+      "  wrote {}/video.frame-NNNN.png (frames {}..{}), video.contact.png, each frame's "
+      "video.frame-NNNN.report.{{txt,json}}\n  and video.report.{{txt,json}}\n",
+      out_dir, first, last);
   uint64_t mipgen_writes = 0, mipgen_differing = 0;
   for (const VideoFrameReport& f : frames) {
     for (const VideoMipgenCheck& m : f.mipgen) {
