@@ -8,6 +8,9 @@ build=${TMU_BUILD_DIR:-$root/build}
 # when told that the header's macros and __DATE__/__TIME__ may be ignored: without this every
 # clean build recompiles them.
 export CCACHE_SLOPPINESS=${CCACHE_SLOPPINESS:-pch_defines,time_macros}
+# Paths inside the checkout hashed relative to it: a clone elsewhere (CI's fresh clone) finds
+# what another clone compiled.
+export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root}
 
 "$root/scripts/setup.sh"
 cmake -S "$root" -B "$build" -G Ninja "$@"

@@ -83,6 +83,9 @@ declare -A ci_skip=(
 # keeps the file and line of every frame in a report. NDEBUG as in the main build. The test
 # files themselves compile at -O0 (tests/CMakeLists.txt): the --ci subset took 164 s instead of
 # 195 from a cold cache, its tests 31 s instead of 19.
+# As scripts/build.sh: ccache hits for precompiled headers and for another clone's compiles.
+export CCACHE_SLOPPINESS=${CCACHE_SLOPPINESS:-pch_defines,time_macros}
+export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root}
 flags=(-DTMU_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG")
 if ((run_build)); then

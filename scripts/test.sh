@@ -39,6 +39,7 @@ timeout=${TMU_TEST_TIMEOUT:-600}
 select=()
 [[ -n "$exclude" ]] && select=(-LE "$exclude")
 
+export TMU_SETUP=${TMU_SETUP:-tests}  # the packages the tests need (scripts/setup.sh)
 start=$SECONDS
 "$root/scripts/build.sh"
 build_s=$((SECONDS - start))

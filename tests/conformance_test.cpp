@@ -17,15 +17,15 @@
 
 #include <filesystem>
 #include <iostream>
-#include <mutants.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "blocks/registry.hpp"
 #include "harness/cosim.hpp"
-#include "harness/described_engines.hpp"
+#include "harness/described_block.hpp"
 #include "tests/cosim_test_support.hpp"
+#include "tests/mutant_cases.hpp"
 #include "texsim/cosim_options.hpp"
 
 namespace tmu::tb {
@@ -33,6 +33,9 @@ namespace tmu::tb {
 // How GoogleTest prints a case (ctest's test names end in it): the variant, not its bytes.
 void PrintTo(const BlockVariant& v, std::ostream* os) {
   *os << v.block << (v.key.empty() ? "" : "/" + v.key);
+}
+void PrintTo(const MutantCase& m, std::ostream* os) {
+  *os << m.block << (m.key.empty() ? "" : "/" + m.key) << " mutant " << m.name;
 }
 
 namespace {
@@ -166,22 +169,6 @@ INSTANTIATE_TEST_SUITE_P(Blocks, Conformance, ::testing::ValuesIn(block_variants
                          });
 
 // ---- mutants ------------------------------------------------------------------------------------
-
-struct MutantCase {
-  std::string block, name, key, expect, why;
-  DescribedBlock::EngineFactory rtl;
-};
-
-std::vector<MutantCase> mutant_cases() {
-#define TMU_MUTANT_CASE(block, name, key, Model, expect, why) \
-  {#block, #name, key, expect, why, rtl_level<desc::block, Model>("rtl")},
-  return {TMU_MUTANTS(TMU_MUTANT_CASE)};
-#undef TMU_MUTANT_CASE
-}
-
-void PrintTo(const MutantCase& m, std::ostream* os) {
-  *os << m.block << (m.key.empty() ? "" : "/" + m.key) << " mutant " << m.name;
-}
 
 class Mutant : public ::testing::TestWithParam<MutantCase> {};
 

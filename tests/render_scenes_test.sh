@@ -39,18 +39,26 @@ for scene in "${scenes[@]}"; do
   volume=false
   # A volume scene (docs/volume.md): ideal, and golden against it; its --chips are slabs (below).
   grep -q '"volume"' "$scene" && volume=true && runs=("ideal" "golden --compare ideal") && chips=()
-  # Footprint materials on the chips: one step in flight makes the full frame about 30 s at rtl,
-  # so the check here runs on a copy at half the resolution (images resolved against the scene's
-  # folder); render_chips_full_NAME (label long) runs the full frame.
+  # A copy at half the resolution (images resolved against the scene's folder), a quarter of the
+  # pixels: hls (the SystemC models, sequential: 3 to 5 times rtl's time) renders it, its
+  # models shown equal item by item in the conformance suite and at full size by --long's
+  # render_scene_full_NAME (label long); a fly-over's hls run takes its first four frames. And
+  # footprint materials on the chips: one step in flight makes the full frame about 30 s at rtl,
+  # so the chips render the copy too (the full frame in render_scene_full_NAME).
+  half="$work/$name-half.json"
+  perl -pe 's{"resolution": \[(\d+), (\d+)\]}{sprintf(q("resolution": [%d, %d]), $1 / 2, $2 / 2)}e;
+    s{"((?:images|models)/)}{"'"$root"'/scenes/$1}g' "$scene" >"$half"
+  if grep -q '"resolution"' "$scene" && cmp -s "$scene" "$half"; then fail "$name: no half-size copy"; fi
+  full=${TMU_RENDER_FULL:-0}
   chip_scene=$scene
-  if grep -q '"footprint"' "$scene" && [[ ${TMU_CHIPS_FULL:-0} != 1 ]]; then
-    chip_scene="$work/$name-half.json"
-    perl -pe 's{"resolution": \[(\d+), (\d+)\]}{sprintf(q("resolution": [%d, %d]), $1 / 2, $2 / 2)}e;
-      s{"images/}{"'"$root"'/scenes/images/}g' "$scene" >"$chip_scene"
-  fi
+  grep -q '"footprint"' "$scene" && [[ $full != 1 ]] && chip_scene=$half
   for run in "${runs[@]}" ${chips[@]+"${chips[@]}"}; do
     at=$scene
     [[ $run == "${chips[0]:-}" ]] && at=$chip_scene
+    if [[ $run == hls* && $full != 1 ]]; then
+      at=$half
+      grep -q '"flyover"' "$scene" && at=$scene && run+=" --frames 0-3"
+    fi
     # shellcheck disable=SC2086
     if out=$("$texsim" render "$at" --engine $run --out "$work/$name" --no-progress 2>&1); then
       verdict=$(grep -oE "MATCH[^,]*|MISMATCH[^,]*" <<<"$out" | head -1)

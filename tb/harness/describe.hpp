@@ -67,7 +67,7 @@ constexpr bool has_op(const DescRow (&rows)[N]) {
       return t;                                                                  \
     }                                                                            \
     template <class M>                                                           \
-    static std::vector<::tmu::tb::PortRow<M>> rtl_rows() {                       \
+    static std::vector<::tmu::tb::PortRow<::tmu::tb::RtlPorts>> rtl_rows() {     \
       return {TMU_PORTS_##block(TMU_RTL_C, TMU_RTL_F)};                          \
     }                                                                            \
     enum Index_ : int { TMU_PORTS_##block(TMU_DESC_INDEX_C, TMU_DESC_INDEX_F) }; \

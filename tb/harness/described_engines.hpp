@@ -10,6 +10,7 @@
 
 #include "harness/described_block.hpp"
 #include "harness/rtl_ports.hpp"
+#include "harness/rtl_runner.hpp"
 
 namespace tmu::tb {
 
@@ -21,9 +22,9 @@ class PortsRtlEngine : public Engine {
       : block_(std::move(block)), name_(std::move(name)) {}
   std::string name() const override { return name_; }
   RunResult run(const std::vector<Txn>& items, const RunOptions& options) override {
-    PortsRtlAdapter<M> adapter(Desc::table(), Desc::template rtl_rows<M>(),
-                               block_->environment(options.stalls.seed ^ kEnvironmentSeedSalt));
-    return run_rtl(adapter, items, block_->plan(items), options);
+    PortLogic<RtlPorts> ports(Desc::table(), Desc::template rtl_rows<M>(),
+                              block_->environment(options.stalls.seed ^ kEnvironmentSeedSalt));
+    return run_rtl(ports, &make_rtl_model<M>, items, block_->plan(items), options);
   }
 
  private:

@@ -16,7 +16,8 @@
 
 namespace tmu::tb {
 
-// The SystemC counterpart of RtlAdapter: a module that owns the DUT and its signals.
+// The SystemC counterpart of a Verilated model and its port logic: a module that owns the DUT
+// and its signals.
 class ScAdapter {
  public:
   virtual ~ScAdapter() = default;

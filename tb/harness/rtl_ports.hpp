@@ -1,20 +1,20 @@
-// The Verilated face of a block's port description (harness/ports.hpp): TMU_DESCRIBE_RTL(block)
-// turns the rows of TMU_PORTS_<block> into an accessor per row for any Verilated model with
-// those ports (the block's top, its parameter variants and its mutants), and PortsRtlAdapter
-// drives and samples a model through them. Nothing here names a port: a wrong or missing
-// port in the description is a compile error at the first model it is used with.
+// The Verilated face of a block's port description (harness/ports.hpp): TMU_DESCRIBE(block)'s
+// rtl_rows<M> turns the rows of TMU_PORTS_<block> into an accessor per row for any Verilated
+// model M with those ports (the block's top, its parameter variants and its mutants), through
+// which PortLogic<RtlPorts> (harness/rtl_runner.hpp) drives and samples the model. Nothing here
+// names a port: a wrong or missing port in the description is a compile error at the first
+// model it is used with.
 #pragma once
 
 #include <verilated.h>
 
-#include <memory>
+#include <cstddef>
+#include <cstdint>
 #include <type_traits>
-#include <utility>
-#include <vector>
 
 #include "harness/port_logic.hpp"
 #include "harness/row_classes.hpp"
-#include "harness/rtl_runner.hpp"
+#include "harness/rtl_model.hpp"
 
 namespace tmu::tb {
 
@@ -54,36 +54,15 @@ void rtl_get(const VlWide<N>& port, uint64_t* v, int n, int w) {
   }
 }
 
-// A Verilated model driven through its block's port description.
-template <class M>
-class PortsRtlAdapter : public RtlAdapter<M> {
- public:
-  PortsRtlAdapter(const BlockPorts& ports, const std::vector<PortRow<M>>& rows,
-                  std::unique_ptr<Environment> env)
-      : logic_(ports, rows, std::move(env)) {}
-
-  void init(M& m) override { logic_.init(m); }
-  void drive(M& m, const Txn* item) override { logic_.drive(m, item); }
-  bool accepts(const M& m, const Txn& item) const override { return logic_.accepts(m, item); }
-  void set_out_ready(M& m, bool ready) override { logic_.set_out_ready(m, ready); }
-  bool out_valid(const M& m) const override { return logic_.out_valid(m); }
-  Txn out(const M& m) const override { return logic_.out(m); }
-  void configure(M& m, const Txn& item) override { logic_.configure(m, item); }
-  void env_drive(M& m) override { logic_.env_drive(m); }
-  void env_sample(const M& m) override { logic_.env_sample(m); }
-  bool quiet(const M&) const override { return logic_.quiet(); }
-  void finish(const M& m, RunResult& result) override { logic_.finish(m, result); }
-
- private:
-  PortLogic<M> logic_;
-};
-
 }  // namespace tmu::tb
 
-// The accessors of TMU_PORTS_<block>'s rows, for TMU_DESCRIBE (M is the model type).
+// The accessors of TMU_PORTS_<block>'s rows, for TMU_DESCRIBE (M is the model type; the
+// RtlPorts an accessor is given are an M's, harness/rtl_model.hpp).
 // clang-format off
-#define TMU_RTL_SET(port, n, w) +[](M& m, const uint64_t* v) { ::tmu::tb::rtl_put(m.port, v, n, w); }
-#define TMU_RTL_GET(port, n, w) +[](const M& m, uint64_t* v) { ::tmu::tb::rtl_get(m.port, v, n, w); }
+#define TMU_RTL_SET(port, n, w) +[](::tmu::tb::RtlPorts& p, const uint64_t* v) { \
+    ::tmu::tb::rtl_put(reinterpret_cast<M&>(p).port, v, n, w); }
+#define TMU_RTL_GET(port, n, w) +[](const ::tmu::tb::RtlPorts& p, uint64_t* v) { \
+    ::tmu::tb::rtl_get(reinterpret_cast<const M&>(p).port, v, n, w); }
 #define TMU_RTL_Handshake(ch) {TMU_RTL_SET(ch##_valid_i, 1, 1), TMU_RTL_GET(ch##_ready_o, 1, 1)},
 #define TMU_RTL_Result(ch) {TMU_RTL_SET(ch##_ready_i, 1, 1), TMU_RTL_GET(ch##_valid_o, 1, 1)},
 #define TMU_RTL_ValidOut(ch) {nullptr, TMU_RTL_GET(ch##_valid_o, 1, 1)},

@@ -222,8 +222,8 @@ void Pipeline::generate_mipmaps(size_t m, MaterialWork& w) {
     attach(run, block);
     run.items = tb::mipgen_items(cfg, level0_plane(tex, p));
     run_unit(run, level_, {});
-    for (const tb::Txn& w : run.result.outputs) {
-      const texram::CellWrite cw = tb::mipgen_txn_write(w);
+    for (const tb::Txn& out : run.result.outputs) {
+      const texram::CellWrite cw = tb::mipgen_txn_write(out);
       generated.banks[cw.cell.bank][cw.cell.address] = cw.value;
     }
     w.units.push_back(std::move(run));

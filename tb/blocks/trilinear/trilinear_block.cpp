@@ -592,7 +592,7 @@ void TrilinearBlock::cover(const std::vector<Txn>& items, size_t index, const Tx
   if (index < cover_next_) {
     cover_next_ = 0;
     cover_setup_ = first_;
-    cover_pages_ = {};
+    cover_pages_ = texram::PageModel();
   }
   for (; cover_next_ < index; ++cover_next_) {
     const Txn& t = items[cover_next_];
