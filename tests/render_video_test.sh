@@ -8,6 +8,9 @@
 source "$(dirname "${BASH_SOURCE[0]}")/check_lib.sh" "$1"
 scene="$root/scenes/video.json"
 render() { "$texsim" render "$@" --no-progress 2>&1; }
+verdict() {  # $1 0 when the check held, $2 what it checks
+  if [[ $1 -eq 0 ]]; then pass "$2"; else fail "$2"; return 1; fi
+}
 
 out=$(render "$scene" --engine rtl --check golden --chips 1 --frames 1:2 --out "$work/a")
 code=$?
@@ -20,8 +23,8 @@ else
 fi
 # Each frame shows its own video frame (the report's "shown" column).
 shown=$(grep -E '^ +[0-9]+ screen ' <<<"$out" | awk '{print $1 "=" $3}' | tr '\n' ' ')
-[[ $shown == "1=1 2=2 " ]] && pass "render f shows video frame f ($shown)" ||
-  fail "frames shown: '$shown'"
+[[ $shown == "1=1 2=2 " ]]
+verdict $? "render f shows video frame f ($shown)"
 # Frame 2 alone (frames 0..1 fed, not rendered) is frame 2 of the range.
 if render "$scene" --engine golden --chips 1 --frames 2 --out "$work/alone" >/dev/null &&
   cmp -s "$work/a/video.frame-0002.png" "$work/alone/video.frame-0002.png"; then
@@ -29,10 +32,10 @@ if render "$scene" --engine golden --chips 1 --frames 2 --out "$work/alone" >/de
 else
   fail "frame 2 alone differs"
 fi
-grep -q "mipgen: the block at rtl over every rendered frame: [0-9]* writes, MATCH" <<<"$out" &&
-  pass "the mipgen block at rtl writes every frame's front buffer" || fail "no mipgen match"
-grep -q "host work:" <<<"$out" && grep -q "video stream of screen" <<<"$out" &&
-  pass "the golden video stream is named as host work" || fail "no host work named"
+grep -q "mipgen: the block at rtl over every rendered frame: [0-9]* writes, MATCH" <<<"$out"
+verdict $? "the mipgen block at rtl writes every frame's front buffer"
+grep -q "host work:" <<<"$out" && grep -q "video stream of screen" <<<"$out"
+verdict $? "the golden video stream is named as host work"
 
 for variant in 'interlaced, one plane|"interlaced": true, "planes": 1' \
   'interlaced, four planes|"interlaced": true, "planes": 4' \
@@ -40,14 +43,16 @@ for variant in 'interlaced, one plane|"interlaced": true, "planes": 1' \
   what=${variant%%|*} keys=${variant#*|}
   perl -pe 's{"interlaced": false, "planes": 4}{'"$keys"'}' "$scene" >"$work/v.json"
   out=$(render "$work/v.json" --engine rtl --check golden --chips 1 --frames 0-1 --out "$work/v")
-  [[ $? -eq 0 && $out == *"check: MATCH"* ]] && pass "$what: rtl = golden, frames 0-1" ||
-    { fail "$what"; echo "$out" | tail -15; }
+  code=$?
+  [[ $code -eq 0 && $out == *"check: MATCH"* ]]
+  verdict $? "$what: rtl = golden, frames 0-1" || echo "$out" | tail -15
 done
 
 out=$(render "$scene" --engine golden --check golden --chips 1 --frames 0:0 --inject-fault 10 \
   --out "$work/f")
-[[ $? -eq 1 && $out == *"MISMATCH"* ]] && pass "an injected fault is caught (exit 1)" ||
-  { fail "injected fault"; echo "$out" | tail -10; }
+code=$?
+[[ $code -eq 1 && $out == *"MISMATCH"* ]]
+verdict $? "an injected fault is caught (exit 1)" || echo "$out" | tail -10
 
 refused() {  # $1 what, $2 the text the message must hold, then render's arguments
   local what=$1 want=$2
@@ -72,8 +77,9 @@ done
 perl -pe 's{"source": "generated", "pattern": "bars", "size": \[64, 64\]}{"files": "clip/clip-%04d.png"}; s{"frames": 4}{"frames": 3}' \
   "$scene" >"$work/files.json"
 out=$(render "$work/files.json" --engine rtl --check golden --chips 1 --out "$work/files-out")
-[[ $? -eq 0 && $out == *"files "*"clip-%04d.png"*"3 frames"* && -f $work/files-out/video.frame-0002.png ]] &&
-  pass "a video of three files renders, rtl = golden" || { fail "files"; echo "$out" | tail -15; }
+code=$?
+[[ $code -eq 0 && $out == *"files "*"clip-%04d.png"*"3 frames"* && -f $work/files-out/video.frame-0002.png ]]
+verdict $? "a video of three files renders, rtl = golden" || echo "$out" | tail -15
 rm "$work/clip/clip-0001.png"
 refused "a missing file" "materials.screen.video.files: frame 1: file not found: " "$work/files.json" --chips 1
 "$texsim" pattern noise "$work/clip/clip-0001.png" --width 16 --height 32 >/dev/null
