@@ -31,6 +31,11 @@ for scene in "${scenes[@]}"; do
   # detail sample); without --chips it is refused (exit 2, the field named, no output).
   detail=false
   grep -q '"detail"' "$scene" && detail=true && runs=("ideal" "hls --check golden --chips 4")
+  # A video scene (docs/video.md "Rendering a video"): only the chip samples a video map, so hls
+  # renders its first two frames on a chip and rtl every frame on four, each checked against
+  # golden on the same chips; without --chips it is refused like a detail scene.
+  video=false
+  grep -q '"video"' "$scene" && video=true && runs=("hls --check golden --chips 1 --frames 0:1")
   volume=false
   # A volume scene (docs/volume.md): ideal, and golden against it; its --chips are slabs (below).
   grep -q '"volume"' "$scene" && volume=true && runs=("ideal" "golden --compare ideal") && chips=()
@@ -66,13 +71,15 @@ for scene in "${scenes[@]}"; do
       failures=$((failures + 1))
     fi
   done
-  if $detail; then
+  if $detail || $video; then
+    key=detail
+    $video && key=video
     for refused_run in "rtl --check golden|render with --chips N" "golden|render with --chips N"; do
       run=${refused_run%%|*} why=${refused_run#*|} refused="$work/$name-refused"
       # shellcheck disable=SC2086
       out=$("$texsim" render "$scene" --engine $run --out "$refused" --no-progress 2>&1)
       code=$?
-      if [[ $code -eq 2 && $out == *"materials."*".detail: "*"$why"* && ! -e $refused ]]; then
+      if [[ $code -eq 2 && $out == *"materials."*".$key: "*"$why"* && ! -e $refused ]]; then
         echo "ok   $name: $run refused (exit 2, no output): $why"
       else
         echo "FAIL $name: $run: exit $code: $out"

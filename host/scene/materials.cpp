@@ -137,6 +137,28 @@ footprint::Config parse_footprint(const JsonNode& node) {
   return c;
 }
 
+// A video material: what the chip's video path can do with it. Only the chip samples a video
+// map (its buffers are in the chip's memory), the video port sets the configuration, and the
+// video's own mipmap generator builds the pyramid.
+void check_video_material(const JsonNode& node, Material& m) {
+  const texram::TexelKind kind =
+      m.video->planes == 1 ? texram::TexelKind::kLuminance : texram::TexelKind::kTrueColour;
+  if (auto config = node.find("config"); config && m.sampler.kind != kind) {
+    config->fail(fmt::format("a video of {} plane{} is held as {}", m.video->planes,
+                             m.video->planes == 1 ? "" : "s",
+                             m.video->planes == 1 ? "luminance" : "rgba"));
+  }
+  m.sampler.kind = kind;
+  const JsonNode video = node.at("video");
+  if (node.has("mipmaps"))
+    node.at("mipmaps").fail("a video's pyramid is made by its own mipmap generator (000 §12)");
+  if (m.unit == Material::Unit::kLowcost)
+    video.fail("a video map is the TEXRAM's (not unit lowcost)");
+  if (m.detail) video.fail("a video map with a detail map is not supported yet");
+  if (m.order == Material::Order::kTexture || m.order == Material::Order::kComposed)
+    video.fail("orders texture and composed sample at the vertices, not through the chip");
+}
+
 Material parse_material(const JsonNode& node, const std::string& name, const std::string& folder) {
   node.expect_object();
   Material m;
@@ -162,8 +184,20 @@ Material parse_material(const JsonNode& node, const std::string& name, const std
                    "bump",        "specular",
                    "environment", "reflectance",
                    "procedural",  "tau",
-                   "order",       "lod"});
-  m.texture = parse_texture(node.at("texture"), folder);
+                   "order",       "lod",
+                   "video"});
+  if (node.has("video") && node.has("texture"))
+    node.at("video").fail("a material has a texture or a video, not both");
+  if (auto video = node.find("video")) {
+    m.video = parse_video(*video, folder);
+    // The video's frames are the texture: its size for the rasterizer's uv scale, never loaded
+    // (render/video_feed writes the chip's memory).
+    m.texture.pattern = "video";
+    m.texture.width = m.video->width;
+    m.texture.height = m.video->height;
+  } else {
+    m.texture = parse_texture(node.at("texture"), folder);
+  }
   const bool ccc_file = m.texture.kind == TextureSource::Kind::kCcc;
 
   texram::SamplerConfig& s = m.sampler;
@@ -243,6 +277,10 @@ Material parse_material(const JsonNode& node, const std::string& name, const std
       d.fail("orders texture and composed sample at the vertices, not through the chip");
   }
 
+  if (m.video) {
+    check_video_material(node, m);
+    return m;
+  }
   // Sides: what the unit that samples the texture can hold.
   const JsonNode texture = node.at("texture");
   const JsonNode where = m.texture.kind == TextureSource::Kind::kImage ? texture.at("image")

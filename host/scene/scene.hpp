@@ -80,6 +80,24 @@ struct Detail {
   bool modulate = true;  // "combine": modulate (default) or replace
 };
 
+// A video map (000 §11-12, docs/video.md): the material's texture changes every frame. Frame k of
+// the source goes through the video port, the mipmap generator and the page-row buffers into one
+// of two buffers of a chip's memory; a chip-side swap of the DRF's base shows it (texsim render
+// --chips N --frames A:B). Only the chip samples it.
+struct Video {
+  enum class Source { kGenerated, kFiles };
+  Source source = Source::kGenerated;
+  std::string pattern;  // kGenerated: "bars", "rings" or "noise" (render/video_pattern)
+  std::string files;    // kFiles: the resolved path with one %d or %0Nd for the frame number
+  int width = 64, height = 64;  // level-0 texels, powers of two up to 512
+  bool interlaced = false;      // field 1 (even lines) then field 2 (odd lines)
+  int planes = 4;               // 1 (luminance) or 4 (R G B A, as a material's default rgba)
+  int frames = 1;               // frames 0 .. frames - 1
+  double fps = 30;              // the port's rate: width x height x fps texels a second
+};
+// The file of frame `k` of a kFiles video (its pattern with the number put in).
+std::string video_file(const Video& video, int k);
+
 // R of 000 eq. 6-7: the register k_s, or a reflectance map k_s(u, v) read at the texture's
 // (u, v), optionally with its own detail map.
 struct Reflectance {
@@ -116,6 +134,7 @@ struct Material {
   // Footprint assembly (000 §10) in front of the trilinear unit; absent: isotropic sampling.
   std::optional<footprint::Config> footprint;
   std::optional<Detail> detail;  // the texture's detail map
+  std::optional<Video> video;    // instead of "texture": a map that changes every frame
   // Per-pixel shading (001 §2.3, §5): the diffuse shading map (and the specular one) read at
   // the coordinates the (bump-deflected) normal gives, instead of the vertex shade I_d.
   enum class Shading { kVertex, kMaps };

@@ -25,6 +25,8 @@ TextureSource parse_texture(const JsonNode& node, const std::string& folder);
 void parse_effects(const JsonNode& node, const std::string& folder, Material& material);
 // "detail": {...} of a map of `texture_size` (the material's texture or reflectance map).
 Detail parse_detail(const JsonNode& node, const std::string& folder, glm::ivec2 texture_size);
+// "video": {...} of a material (scene/video.cpp).
+Video parse_video(const JsonNode& node, const std::string& folder);
 // A "nurbs" object's keys (surface or patches, tessellation) into `object`.
 void parse_nurbs_object(const JsonNode& node, Object& object);
 // The material keys "tau", "order" and "lod" (004) into `material`.

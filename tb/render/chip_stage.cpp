@@ -39,6 +39,11 @@ ChipStage::ChipStage(const host::Scene& scene, const std::vector<MaterialTexture
                        "has a detail map, which only the chip samples, but cannot go to a chip: " +
                            why_not_.back());
     }
+    if (mat.video && !why_not_.back().empty()) {  // the video port writes a chip's memory
+      throw InputError(scene.path, "materials." + mat.name + ".video",
+                       "a video map is in a chip's memory, but the material cannot go to a chip: " +
+                           why_not_.back());
+    }
   }
 }
 

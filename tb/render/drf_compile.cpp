@@ -11,6 +11,7 @@
 #include "texram/chip/chip_memory.hpp"
 #include "texram/detail.hpp"
 #include "texram/page_model.hpp"
+#include "texram/video/video_map.hpp"
 
 namespace tmu::render {
 namespace {
@@ -33,6 +34,8 @@ struct Step {
   std::shared_ptr<const texram::DetailMap> detail;
   bool modulate = false;
   std::shared_ptr<const texram::TexramTexture> offset_v;  // an offsets step's v map
+  // A video map's two buffers (render/video_feed): both placed, the DRF's base the front one.
+  std::shared_ptr<const VideoBuffers> video;
 };
 
 bool needs_clut(const texram::TexramTexture& t) {
@@ -59,7 +62,8 @@ void push_with_detail(std::vector<Step>& steps, const Step& s) {
                std::nullopt,
                {},
                false,
-               std::make_shared<const texram::TexramTexture>(d.offset_v)};
+               std::make_shared<const texram::TexramTexture>(d.offset_v),
+               {}};
   Step detail{role + "detail",
               std::make_shared<const texram::TexramTexture>(d.detail),
               texram::detail_sampler(d, s.sampler),
@@ -70,6 +74,7 @@ void push_with_detail(std::vector<Step>& steps, const Step& s) {
               std::nullopt,
               {},
               false,
+              {},
               {}};
   steps.push_back(offsets);
   steps.push_back(detail);
@@ -90,7 +95,7 @@ std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex
   std::vector<Step> steps;
   const auto map_step = [](const std::string& role, const MapTexture& m, DrfOp op, bool takes,
                            const std::string& parameter, texram::Addressing addressing) {
-    Step s{role, m.texture, m.sampler, op, takes, parameter, {}, std::nullopt, {}, false, {}};
+    Step s{role, m.texture, m.sampler, op, takes, parameter, {}, std::nullopt, {}, false, {}, {}};
     s.sampler.addressing = addressing;
     return s;
   };
@@ -105,8 +110,9 @@ std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex
   const std::string coords = mat.footprint ? "(u, v, r1, r2), I_d" : "(u, v, lambda), I_d";
   Step texture{"",     tex.texram, mat.sampler,   DrfOp::kTexture, !steps.empty(),
                coords, {},         mat.footprint, tex.detail,      false,
-               {}};
+               {},     {}};
   texture.modulate = mat.detail && mat.detail->modulate;
+  texture.video = tex.video;
   push_with_detail(steps, texture);
   if (maps.reflectance) {
     Step r = map_step("reflectance", maps.reflectance, DrfOp::kReflectance, false, "",
@@ -132,6 +138,7 @@ std::vector<Step> steps_of(const host::Material& mat, const MaterialTexture& tex
 }
 
 uint32_t cells_of(const Step& s) {
+  if (s.video) return 2 * page_up(s.texture->geometry.bank_cells());
   if (s.offset_v) {
     return page_up(s.texture->geometry.bank_cells()) + page_up(s.offset_v->geometry.bank_cells());
   }
@@ -265,6 +272,13 @@ ScenePrograms compile_drfs(const host::Scene& scene, const std::vector<MaterialT
         d.base = place(s.texture, label + ".u", -1);
         if (place(s.offset_v, label + ".v", -1) != texram::chip::offsets_v_base(d))
           throw std::logic_error("drf_compile: the v-offset map is not where the chip reads it");
+      } else if (s.video) {
+        // Buffer 1 one page-rounded buffer after buffer 0, where VideoMap::buffer_base puts it.
+        const std::array<uint32_t, 2> at = {place(s.video->buffers[0], label + ".video[0]", -1),
+                                            place(s.video->buffers[1], label + ".video[1]", -1)};
+        if (at[1] - at[0] != texram::video::VideoMap::buffer_stride(s.texture->geometry))
+          throw std::logic_error("drf_compile: a video's buffer 1 is not where the swap puts it");
+        d.base = at[static_cast<size_t>(s.video->front)];
       } else {
         d.base = place(s.texture, label, -1);
       }

@@ -21,6 +21,7 @@
 #include "common/image.hpp"
 #include "common/image_file.hpp"
 #include "formats/formats.hpp"
+#include "render/contact_sheet.hpp"
 #include "render/unit_check.hpp"
 #include "scene/json_node.hpp"
 
@@ -202,22 +203,6 @@ std::vector<Pixel> cast(const Flyover& fo, const Keyframe& cam) {
   return out;
 }
 
-ImageRgb8 contact_sheet(const std::vector<ImageRgb8>& frames) {
-  const int n = static_cast<int>(frames.size());
-  const int cols = std::min(n, 4), rows = (n + cols - 1) / cols;
-  const int w = frames[0].width, h = frames[0].height, gap = 4;
-  ImageRgb8 sheet(cols * (w + gap) + gap, rows * (h + gap) + gap);
-  std::fill(sheet.pixels.begin(), sheet.pixels.end(), Rgb8{40, 40, 40});
-  for (int i = 0; i < n; ++i) {
-    const int ox = gap + (i % cols) * (w + gap), oy = gap + (i / cols) * (h + gap);
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x)
-        sheet.at(ox + x, oy + y) = frames[static_cast<size_t>(i)].at(x, y);
-    }
-  }
-  return sheet;
-}
-
 // The virtual texture seen whole (a level of at most 512 texels a side) with each clipped
 // level's tile drawn on it, the finest in red to the coarsest in yellow: where the clip-map is.
 ImageRgb8 tiles_picture(clipmap::TileManager& manager, const clipmap::Config& c,
@@ -370,10 +355,11 @@ FrameRange parse_frame_range(const std::string& text) {
     } catch (const std::exception&) {
     }
     if (part.empty() || end != part.size() || n < 0)
-      throw InputError("--frames", "", "expected A or A-B (whole numbers), got '" + text + "'");
+      throw InputError("--frames", "",
+                       "expected A, A-B or A:B (whole numbers), got '" + text + "'");
     return n;
   };
-  const size_t dash = text.find('-');
+  const size_t dash = text.find_first_of("-:");
   FrameRange r;
   r.first = whole(text.substr(0, dash));
   r.last = dash == std::string::npos ? r.first : whole(text.substr(dash + 1));

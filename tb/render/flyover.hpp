@@ -97,7 +97,7 @@ bool is_flyover(const std::string& scene_path);
 struct FrameRange {
   int first = 0, last = -1;
 };
-// "A" or "A-B", whole numbers; throws InputError("--frames", ...) otherwise.
+// "A", "A-B" or "A:B", whole numbers; throws InputError("--frames", ...) otherwise.
 FrameRange parse_frame_range(const std::string& text);
 // `range` with last -1 made the path's last frame; throws InputError("--frames", ...) when it is
 // empty or leaves a path of `frames` frames.

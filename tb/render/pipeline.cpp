@@ -100,13 +100,39 @@ uint32_t rgba_of(const glm::dvec4& c) {
   return texram::rgba(ch(c.r), ch(c.g), ch(c.b), ch(c.a));
 }
 
-Pipeline::Pipeline(const host::Scene& scene, Level level, int chips)
+Pipeline::Pipeline(const host::Scene& scene, Level level, int chips, const VideoState* video)
     : scene_(scene), level_(level) {
   for (size_t m = 0; m < scene.materials.size(); ++m) {
     const host::Material& mat = scene.materials[m];
     const std::string field = "materials." + mat.name + ".texture";
     MaterialTexture mt;
     if (mat.procedural) {  // no texture: the material unit computes the colour
+      textures_.push_back(std::move(mt));
+      continue;
+    }
+    if (mat.video) {
+      // The video port writes a chip's memory (000 §11-12): no separate unit has a video path.
+      const std::string at = "materials." + mat.name + ".video";
+      if (level == Level::kIdeal)
+        throw InputError(scene.path, at, "a video map renders at golden, hls or rtl (on chips)");
+      if (chips <= 0) {
+        throw InputError(scene.path, at,
+                         "the video port writes a TEXRAM chip's memory, and only the chip samples "
+                         "a video map: render with --chips N");
+      }
+      mt.video =
+          video && m < video->size() && (*video)[m] ? (*video)[m] : empty_video_buffers(*mat.video);
+      mt.texram = mt.video->buffers[static_cast<size_t>(mt.video->front)];
+      mt.size = {mat.video->width, mat.video->height};
+      note_host_work(
+          {"video stream of " + mat.name +
+               " (000 §11-12: video port, mipmap generator, page-row buffers and arbiter, the "
+               "swap)",
+           "the golden VideoMap on the host writes the chip's memory: the video unit joining "
+           "video_port, mipgen and video_rows to the chip is not in hardware yet; the mipgen "
+           "block runs at the engine beside it over each frame, compared cell by cell "
+           "(render/video_mipgen, docs/video.md)"});
+      if (mat.uses_normal()) mt.effects = build_effect_maps(scene, mat);  // the rest of its chain
       textures_.push_back(std::move(mt));
       continue;
     }

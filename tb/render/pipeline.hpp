@@ -23,6 +23,7 @@
 #include "raster/rasterizer.hpp"
 #include "render/effect_maps.hpp"
 #include "render/units.hpp"
+#include "render/video_feed.hpp"
 #include "scene/scene.hpp"
 #include "texram/detail.hpp"
 #include "texram/detail_ideal.hpp"
@@ -45,6 +46,9 @@ struct MaterialTexture {
   // texram holds the host pyramid until the mipmap generator writes the banks, which it does
   // for the material's first fragments (Pipeline::shade).
   bool mipgen_pending = false;
+  // A video map (render/video_feed): its two buffers as they stand for this frame; texram is
+  // then the front buffer. Only the chip samples it (drf_compile places both buffers).
+  std::shared_ptr<const VideoBuffers> video;
 };
 
 // The unit that samples a material's texture (trilinear, or footprint in front of it; not the
@@ -82,7 +86,9 @@ class Pipeline {
   // texture field.
   // With chips > 0 (not ideal), the materials whose maps a TEXRAM chip can sample go through
   // `chips` chips (render/chip_stage.hpp); the others through their separate units as with 0.
-  Pipeline(const host::Scene& scene, Level level, int chips = 0);
+  // A material with a video takes its buffers from `video` (render/video_feed: the frame's), or
+  // cells 0 without one; it needs chips (InputError naming materials.M.video otherwise).
+  Pipeline(const host::Scene& scene, Level level, int chips = 0, const VideoState* video = nullptr);
 
   Level level() const { return level_; }
   // How many materials shade() runs at once, each on its own thread with its own engines

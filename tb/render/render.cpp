@@ -107,7 +107,7 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
   rep.pixels = static_cast<uint64_t>(width) * static_cast<uint64_t>(band.row_end - band.row_begin);
 
   auto t = Clock::now();
-  Pipeline pipe(scene, o.level, o.chips);
+  Pipeline pipe(scene, o.level, o.chips, o.video.get());
   pipe.set_jobs(o.jobs);
   rep.textures_s = since(t);
   if (const ChipStage* chips = pipe.chips()) rep.chips = chip_lines(scene, *chips);
@@ -171,7 +171,7 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
 
   // The picture.
   const ImageRgb8 image = compose(scene, band, records, rgba);
-  const std::string stem = band_stem(o.tile, o.tiles);
+  const std::string stem = o.stem.empty() ? band_stem(o.tile, o.tiles) : o.stem;
   const std::string png = (dir / (stem + ".png")).string();
   if (o.tiles > 1) {
     write_band(png, image, band);
@@ -187,7 +187,7 @@ int render_scene(const std::string& scene_path, const RenderOptions& o, std::ost
 
   // Bit for bit against another engine, fragment by fragment.
   if (o.check) {
-    Pipeline ref(scene, *o.check, o.chips);
+    Pipeline ref(scene, *o.check, o.chips, o.video.get());
     ref.set_jobs(o.jobs);
     // Its own vertex units, for the unit check (the pixels compare on this run's fragments).
     if (samples_at_vertices_anywhere(scene))

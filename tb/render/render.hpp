@@ -4,11 +4,13 @@
 #pragma once
 
 #include <iosfwd>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "render/report.hpp"
 #include "render/units.hpp"
+#include "render/video_feed.hpp"
 
 namespace tmu::render {
 
@@ -26,6 +28,10 @@ struct RenderOptions {
   int chips = 0;  // TEXRAM chips: a surface scene's maps through them (render/chip_stage),
                   // a volume scene's slabs over them; 0: none, the volume's own key
   int jobs = 1;   // materials shaded at once (Pipeline::set_jobs)
+  // A video scene's frame (render/video_render): every video map's buffers as the frame sees
+  // them, and the files' stem ("video.frame-0003"; "" for render or the band's).
+  std::shared_ptr<const VideoState> video;
+  std::string stem;
 };
 
 // Renders; prints the text report to `log` and writes the files into out_dir. Returns the exit

@@ -12,6 +12,7 @@
 #include "render/flyover.hpp"
 #include "render/render.hpp"
 #include "render/tiles.hpp"
+#include "render/video_render.hpp"
 #include "render/volume_render.hpp"
 #include "texsim/commands.hpp"
 #include "volume/volume_scene.hpp"
@@ -26,7 +27,9 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
       "fragment goes through the units its material's chain calls for, at the chosen model level.\n"
       "Writes OUT/render.png (and render.exr for ideal) and OUT/render.report.{json,txt}.\n"
       "A volume scene (a \"volume\" section) is ray-cast through the volume unit (000 §13) at "
-      "ideal or golden.");
+      "ideal or golden.\n"
+      "A scene with a video map (a material's \"video\", 000 §11-12) renders with --chips N as "
+      "frames: OUT/video.frame-NNNN.png\nand OUT/video.report.{json,txt} (docs/video.md).");
   struct Args {
     std::string scene, engine = "golden", check, compare, tile, frames;
     bool waveform = false, no_progress = false;
@@ -66,8 +69,9 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
                   "Flip a bit of fragment N's result (to see --check fail); a volume scene at hls "
                   "or rtl: of the value of chip 0's unit's output N");
   cmd->add_option("--frames", a->frames,
-                  "A fly-over scene (a \"flyover\" section, render/flyover.hpp): the frames A-B "
-                  "(default every frame of its path)");
+                  "A fly-over scene (a \"flyover\" section, render/flyover.hpp) or a scene with a "
+                  "video map (a material's\n\"video\", with --chips N; render/video_render.hpp): "
+                  "the frames A:B or A-B (default every frame)");
   cmd->add_option(
          "--chips", a->options.chips,
          "TEXRAM chips (000 §14). A surface scene: its materials' maps sampled on them, each "
@@ -114,7 +118,15 @@ void add_render_command(CLI::App& app, ExitCode& exit_code) {
       exit_code.value = render::render_flyover(a->scene, o, range, std::cout);
       return;
     }
-    if (!a->frames.empty()) throw InputError(a->scene, "", "--frames is for a fly-over scene");
+    if (render::is_video_scene(a->scene)) {
+      if (a->bands > 0) throw InputError(a->scene, "", "--bands is for a scene without a video");
+      const render::FrameRange range =
+          a->frames.empty() ? render::FrameRange{} : render::parse_frame_range(a->frames);
+      exit_code.value = render::render_video(a->scene, o, range, std::cout);
+      return;
+    }
+    if (!a->frames.empty())
+      throw InputError(a->scene, "", "--frames is for a fly-over scene or a scene with a video");
     exit_code.value = a->bands > 0 ? render::render_bands(a->scene, o, a->bands, std::cout)
                                    : render::render_scene(a->scene, o, std::cout);
   });
