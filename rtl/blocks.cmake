@@ -98,6 +98,19 @@ function(tmu_mutant block name)
   if(failed)
     message(FATAL_ERROR "${model}: see the error above")
   endif()
+  # TMU_MUTANTS=ci (rtl/CMakeLists.txt): each block's first mutant and the first x-leak one
+  # are built and run; the others' edits are still checked above.
+  if(TMU_MUTANTS STREQUAL "ci")
+    set(kind ${block})
+    if(ARG_EXPECT STREQUAL "x-leak")
+      set(kind x-leak)
+    endif()
+    get_property(taken GLOBAL PROPERTY TMU_MUTANT_TAKEN_${kind})
+    if(taken)
+      return()
+    endif()
+    set_property(GLOBAL PROPERTY TMU_MUTANT_TAKEN_${kind} ON)
+  endif()
   add_custom_command(OUTPUT ${mutant}
     COMMAND ${CMAKE_COMMAND} ${mutate} -DROWS=${CMAKE_CURRENT_LIST_FILE} -P ${script}
     DEPENDS ${src} ${edit} ${TMU_RTL_DIR}/mutate.cmake VERBATIM)
@@ -207,15 +220,17 @@ tmu_mutant(fractal unreset VARIANT shared FILE perlin/tmu_fractal_shared.sv EXPE
 
 # CCC low-cost unit (000 §4, Figs. 6-7).
 tmu_block(ccc_cache_bilinear)
+# First: tests/blocks/ccc_cache_bilinear_test.cpp runs it by name, and TMU_MUTANTS=ci builds
+# each block's first mutant.
+tmu_mutant(ccc_cache_bilinear neighbour FILE ccc/tmu_ccc_footprint_axis.sv
+  FROM "{1'b0, blk_o} + (BlockW + 1)'(1)" TO "{1'b0, blk_o} - (BlockW + 1)'(1)"
+  WHY "the lookahead prefetches the block before instead of after (wrong memory requests)")
 tmu_mutant(ccc_cache_bilinear round FILE ccc/tmu_ccc_bilerp.sv
   FROM "VW'(1) << (2 * WW - 1)" TO "VW'(1) << (2 * WW - 2)"
   WHY "the blend adds a quarter instead of half an LSB before dropping the fraction")
 tmu_mutant(ccc_cache_bilinear count FILE ccc/tmu_ccc_cache_bilinear.sv
   FROM "3'(m[0]) + 3'(m[1]) + 3'(m[2]) + 3'(m[3])" TO "3'(m[0]) + 3'(m[1]) + 3'(m[2])"
   WHY "the hit/miss counter drops the fourth block of a footprint (right outputs, wrong statistics)")
-tmu_mutant(ccc_cache_bilinear neighbour FILE ccc/tmu_ccc_footprint_axis.sv
-  FROM "{1'b0, blk_o} + (BlockW + 1)'(1)" TO "{1'b0, blk_o} - (BlockW + 1)'(1)"
-  WHY "the lookahead prefetches the block before instead of after (wrong memory requests)")
 tmu_mutant(ccc_cache_bilinear unreset FILE ccc/tmu_ccc_cache_bilinear.sv EXPECT x-leak
   FROM "      hits_q        <= '0;\n" TO ""
   WHY "the hit counter starts where its flops happen to be")

@@ -7,8 +7,9 @@
 #   scripts/test.sh [--long] [ctest args...]      e.g. scripts/test.sh -L equiv
 #
 # --long (or TMU_LONG=1) also runs the tests labelled `long`, which the default run leaves
-#   out: the full Yosys synthesis of every block (rtl_synth_figures_<top>, docs/synth.md).
-#   A -LE of your own is added to that exclusion.
+#   out: the full Yosys synthesis of every block (rtl_synth_figures_<top>, docs/synth.md), the
+#   scenes' renders at full size; and builds and runs every mutant (the default run: each
+#   block's first and one x-leak, -DTMU_MUTANTS=ci). A -LE of your own is added to the exclusion.
 # TMU_SKIP_SANITIZE=1 leaves the sanitizer subset out (a quick local run); TMU_TEST_TIMEOUT sets
 # the seconds after which a test fails (default 600, with --long 3600).
 # ctest writes JUnit XML to $build/ctest-junit.xml (TMU_JUNIT overrides the path); the ten
@@ -41,7 +42,9 @@ select=()
 
 export TMU_SETUP=${TMU_SETUP:-tests}  # the packages the tests need (scripts/setup.sh)
 start=$SECONDS
-"$root/scripts/build.sh"
+mutants=ci  # each block's first mutant and one x-leak (rtl/CMakeLists.txt); --long: all
+[[ "$long" == 1 ]] && mutants=all
+"$root/scripts/build.sh" -DTMU_MUTANTS=$mutants
 build_s=$((SECONDS - start))
 
 status=0

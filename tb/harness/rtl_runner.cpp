@@ -23,6 +23,9 @@ template class PortLogic<RtlPorts>;
 
 namespace {
 
+// Verilator rejects seed 0; map any 64-bit seed onto 1..2^31-1.
+int verilator_seed(uint64_t seed) { return static_cast<int>(1 + seed % 0x7FFFFFFEull); }
+
 #if defined(VM_COVERAGE) && VM_COVERAGE
 // Coverage build only (-DTMU_RTL_COVERAGE=ON, docs/coverage.md). The coverage files of a
 // run, $TMU_COVERAGE_DIR/<pid>_<n> without the extension: unique in the process (one counter

@@ -8,7 +8,6 @@
 // block has neither.
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "harness/cycle_loop.hpp"
@@ -18,15 +17,7 @@
 
 namespace tmu::tb {
 
-// Adds `error` to the run's error message (runs can fail in more than one way).
-inline void append_error(RunResult& result, const std::string& error) {
-  if (!error.empty()) result.error += (result.error.empty() ? "" : "; ") + error;
-}
-
 inline constexpr uint64_t kTimePerCycle = 10;  // waveform time units (ns) per clock
-
-// Verilator rejects seed 0; map any 64-bit seed onto 1..2^31-1.
-inline int verilator_seed(uint64_t seed) { return static_cast<int>(1 + seed % 0x7FFFFFFEull); }
 
 // Compiled once, in rtl_runner.cpp.
 extern template class PortLogic<RtlPorts>;
