@@ -26,6 +26,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A render of `level` on one chip, checked against golden, into OUT (no progress bar).
+RenderOptions checked_on_a_chip(Level level, const fs::path& out) {
+  RenderOptions o;
+  o.level = level;
+  o.check = Level::kGolden;
+  o.chips = 1;
+  o.progress = false;
+  o.out_dir = out.string();
+  return o;
+}
+
 fs::path temp_dir(const std::string& name) {
   const fs::path d = fs::temp_directory_path() / fmt::format("tmu_video_{}_{}", name, ::getpid());
   fs::remove_all(d);
@@ -226,12 +237,7 @@ TEST(VideoRenderTest, RtlEqualsGoldenOnTheChipsEveryFrame) {
     for (const int planes : {1, 4}) {
       SCOPED_TRACE(fmt::format("interlaced {}, planes {}", interlaced, planes));
       const fs::path scene = write_scene(dir, generated(interlaced, planes, 2));
-      RenderOptions o;
-      o.level = Level::kRtl;
-      o.check = Level::kGolden;
-      o.chips = 1;
-      o.progress = false;
-      o.out_dir = (dir / "out").string();
+      const RenderOptions o = checked_on_a_chip(Level::kRtl, dir / "out");
       std::ostringstream log;
       VideoRenderReport rep;
       EXPECT_EQ(render_video(scene.string(), o, {0, 1}, log, &rep), 0) << log.str();
@@ -264,12 +270,7 @@ TEST(VideoRenderTest, AVideoInAChainWithABumpMapOrAnEnvironment) {
         R"(, "environment": {"map": "sphere", "size": 128}, "reflectance": 0.3)"}) {
     SCOPED_TRACE(extra);
     const fs::path scene = write_scene(dir, generated(true, 4, 1), extra);
-    RenderOptions o;
-    o.level = Level::kRtl;
-    o.check = Level::kGolden;
-    o.chips = 1;
-    o.progress = false;
-    o.out_dir = (dir / "out").string();
+    const RenderOptions o = checked_on_a_chip(Level::kRtl, dir / "out");
     std::ostringstream log;
     VideoRenderReport rep;
     EXPECT_EQ(render_video(scene.string(), o, {0, 0}, log, &rep), 0) << log.str();
@@ -308,13 +309,8 @@ TEST(VideoRenderTest, TheMipgenBlockCheckCatchesABrokenBuffer) {
 
 TEST(VideoRenderTest, AnInjectedFaultIsCaughtOnEveryFrame) {
   const fs::path dir = temp_dir("fault");
-  RenderOptions o;
-  o.level = Level::kGolden;
-  o.check = Level::kGolden;
-  o.chips = 1;
-  o.progress = false;
+  RenderOptions o = checked_on_a_chip(Level::kGolden, dir / "out");
   o.inject_fault = 7;
-  o.out_dir = (dir / "out").string();
   std::ostringstream log;
   VideoRenderReport rep;
   EXPECT_EQ(render_video(write_scene(dir, generated(false, 4, 2)).string(), o, {0, 1}, log, &rep),
