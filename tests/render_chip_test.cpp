@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "blocks/footprint/footprint_block.hpp"
+#include "blocks/mipgen/mipgen_frames.hpp"
 #include "blocks/trilinear/trilinear_block.hpp"
 #include "render/chip_stage.hpp"
 #include "render/drf_compile.hpp"
@@ -225,8 +226,61 @@ TEST(RenderChipTest, EveryBundledChainGivesTheSameColoursOnTheChip) {
     std::cout << "  " << checked << " fragments through the chip\n";
   }
   std::cout << on_chip << " materials through the chips in the renderer\n";
-  // 34 when written, 37 with the footprint materials: fewer means a chain fell off the chips.
-  EXPECT_GE(on_chip, 37u);
+  // 34 when written, 37 with the footprint materials, 38 with the mipmap generator's (the
+  // floor of everything.json): fewer means a chain fell off the chips.
+  EXPECT_GE(on_chip, 38u);
+}
+
+// A material whose mipmaps the real-time generator makes (000 §12) goes on a chip: the mipgen
+// units run (one per byte plane) and the chip's map is the pyramid they wrote, cell by cell at the
+// map's base, not the host's (whose cells are the same values: MipgenTest shows the stream equals
+// the pyramid, so the colours alone cannot tell them apart); the chip samples it, no trilinear
+// unit does.
+TEST(RenderChipTest, TheMipmapGeneratorWritesItsMapInTheChip) {
+  const host::Scene scene =
+      host::load_scene(std::string(TMU_SOURCE_DIR) + "/scenes/everything.json");
+  const auto floor = std::find_if(scene.materials.begin(), scene.materials.end(),
+                                  [](const host::Material& m) { return m.name == "floor"; });
+  ASSERT_NE(floor, scene.materials.end());
+  ASSERT_EQ(floor->mipmaps, host::Material::Mipmaps::kMipgen);
+  const auto m = static_cast<size_t>(floor - scene.materials.begin());
+  Pipeline pipe(scene, Level::kGolden, 4);
+  const std::vector<host::Fragment> frags = front_end(scene, pipe, 0, -1, nullptr);
+  std::vector<host::FragmentRecord> records;
+  for (const host::Fragment& f : frags) records.push_back(host::quantize(f));
+  pipe.shade(records, &frags, nullptr);
+
+  const ChipStage& chips = *pipe.chips();
+  ASSERT_TRUE(chips.samples(m)) << chips.why_not(m);
+  const MaterialProgram& prog = chips.programs().materials[m];
+  const ChipProgram& chip = chips.programs().chips.at(static_cast<size_t>(prog.chip));
+  const auto map = std::find_if(chip.maps.begin(), chip.maps.end(), [&](const ChipMap& c) {
+    return c.material == static_cast<int>(m) && c.role.empty();
+  });
+  ASSERT_NE(map, chip.maps.end());
+  EXPECT_EQ(map->texture, pipe.textures()[m].texram) << "the chip holds the host's pyramid";
+
+  size_t mipgen_units = 0, writes = 0, chip_units = 0;
+  for (const UnitRun& u : pipe.units()) {
+    if (u.material.rfind("floor", 0) != 0) continue;
+    EXPECT_NE(u.kind, "trilinear");
+    EXPECT_NE(u.kind, "footprint");
+    chip_units += u.kind == "texram_chip";
+    if (u.kind != "mipgen") continue;
+    ++mipgen_units;
+    for (const tb::Txn& out : u.result.outputs) {
+      const texram::CellWrite w = tb::mipgen_txn_write(out);
+      ASSERT_EQ(map->texture->banks[w.cell.bank][w.cell.address], w.value)
+          << "bank " << w.cell.bank << " cell " << w.cell.address;
+      ++writes;
+    }
+  }
+  const texram::Geometry& g = map->texture->geometry;
+  size_t texels = 0;  // every texel of every level, the levels narrower than 2 replicated to 2
+  for (int l = 0; l < g.levels(); ++l) texels += size_t{g.stored_width(l)} * g.stored_height(l);
+  EXPECT_EQ(mipgen_units, static_cast<size_t>(g.planes()));
+  EXPECT_EQ(writes, texels * static_cast<size_t>(g.planes()));
+  EXPECT_EQ(chip_units, 1u);
 }
 
 }  // namespace

@@ -13,14 +13,10 @@ namespace {
 using D = tb::desc::texram_chip;
 
 // Why the chips cannot sample material m yet, or "".
-std::string why_not_on_chip(const host::Material& mat, const MaterialTexture& tex,
-                            const MaterialProgram& prog) {
+std::string why_not_on_chip(const host::Material& mat, const MaterialProgram& prog) {
   if (prog.chip < 0) return prog.why;
   if (samples_at_vertices(mat)) {
     return "orders texture and composed sample at the vertices (the material's texture unit)";
-  }
-  if (mat.mipmaps == host::Material::Mipmaps::kMipgen || tex.mipgen_pending) {
-    return "the mipmap generator writes its own unit's banks, not a chip's memory yet";
   }
   return "";
 }
@@ -33,7 +29,7 @@ ChipStage::ChipStage(const host::Scene& scene, const std::vector<MaterialTexture
   memories_.resize(programs_.chips.size());
   for (size_t m = 0; m < scene.materials.size(); ++m) {
     const host::Material& mat = scene.materials[m];
-    why_not_.push_back(why_not_on_chip(mat, textures[m], programs_.materials[m]));
+    why_not_.push_back(why_not_on_chip(mat, programs_.materials[m]));
     if (mat.has_detail() && !why_not_.back().empty()) {  // no other unit has a detail path
       throw InputError(scene.path, "materials." + mat.name,
                        "has a detail map, which only the chip samples, but cannot go to a chip: " +
@@ -45,6 +41,22 @@ ChipStage::ChipStage(const host::Scene& scene, const std::vector<MaterialTexture
                            why_not_.back());
     }
   }
+}
+
+void ChipStage::write_generated(size_t m, std::shared_ptr<const texram::TexramTexture> generated) {
+  const MaterialProgram& prog = programs_.materials.at(m);
+  if (prog.chip < 0) return;
+  const auto chip = static_cast<size_t>(prog.chip);
+  const std::lock_guard<std::mutex> lock(memories_mutex_);
+  for (ChipMap& c : programs_.chips[chip].maps) {
+    if (c.material != static_cast<int>(m) || !c.role.empty()) continue;  // the texture's map
+    if (c.texture->geometry.bank_cells() != generated->geometry.bank_cells())
+      throw std::logic_error("ChipStage: the generated pyramid has another layout: " + c.label);
+    c.texture = generated;
+  }
+  // Passes that hold the old image keep it: they read none of m's cells (a chain reads its own
+  // maps), so their samples are the same whichever image they read.
+  memories_[chip].reset();
 }
 
 std::vector<uint32_t> ChipStage::run_pass(

@@ -30,6 +30,11 @@ class ChipStage {
   const std::string& why_not(size_t m) const { return why_not_[m]; }
   const ScenePrograms& programs() const { return programs_; }
 
+  // The mipmap generator (000 §12) has written material m's texture in its chip: every level
+  // at the map's base, as `generated` holds them (Pipeline::generate_mipmaps, the mipgen units at
+  // the render's level). Passes from now on read that pyramid; before, the map held the host's.
+  void write_generated(size_t m, std::shared_ptr<const texram::TexramTexture> generated);
+
   // Pass `pass` of material m over the fragments `frags` (with a bump map pass 0 is the emit
   // DRF alone and pass 1 the rest; else only pass 0): params[k] the parameter transactions of
   // frags[k], the leading one first (its lead is set here). Runs one texram_chip unit at

@@ -231,6 +231,7 @@ void Pipeline::generate_mipmaps(size_t m, MaterialWork& w) {
   }
   mt.texram = std::make_shared<const texram::TexramTexture>(std::move(generated));
   mt.mipgen_pending = false;
+  if (chips_) chips_->write_generated(m, mt.texram);  // the generator writes the chip's memory
 }
 
 std::vector<glm::ivec2> Pipeline::texture_sizes() const {

@@ -10,6 +10,8 @@
 //   shading maps, "bump", "environment": the deflection chain (render/effect_chain.hpp)
 //   "procedural"     : the material unit (render/procedural_chain.hpp), no texture
 //   order "pc"       : the tau unit (render/tau_stage.hpp) in front of trilinear or footprint
+// With chips (render/chip_stage.hpp) a material's maps are sampled by a TEXRAM chip instead of
+// its trilinear, footprint and combine units; the mipgen units then write the chip's memory.
 #pragma once
 
 #include <functional>
