@@ -1,12 +1,15 @@
 // The harness itself: the scoreboard catches what it must, the driver neither drops nor
 // duplicates, vector files round-trip and reject bad input with a named field.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
 #include "common/error.hpp"
 #include "harness/handshake_driver.hpp"
+#include "harness/hls_runner.hpp"
 #include "harness/scoreboard.hpp"
 #include "harness/vector_file.hpp"
 
@@ -24,6 +27,38 @@ RunResult outputs_of(std::initializer_list<uint64_t> values) {
     r.output_cycles.push_back(r.outputs.size());
   }
   return r;
+}
+
+// --- the hls engine's child process ---------------------------------------------------------
+
+// What the child computed arrives whole: every field of every output, request and counter, the
+// cycles, seconds and error; a child that dies or throws becomes an error, not a result.
+TEST(RunInChildTest, TheResultCrossesThePipeWhole) {
+  RunResult sent = outputs_of({7, 0xFFFF'FFFF'FFFF'FFFFu, 0});
+  sent.outputs[1].f[31] = 0x8000'0000'0000'0001u;
+  sent.cycles = 12345;
+  sent.counters = {{"hits", 3}, {"", 0}, {"page_faults", 1u << 31}};
+  sent.requests = {{}, std::vector<Txn>(70'000)};  // more than the pipe holds: read as written
+  for (size_t i = 0; i < sent.requests[1].size(); ++i) sent.requests[1][i].f[i % 32] = i;
+  sent.seconds = 0.25;
+  sent.error = "a message\nof two lines";
+  const RunResult got = run_in_child([&] { return sent; });
+  EXPECT_EQ(got.outputs, sent.outputs);
+  EXPECT_EQ(got.output_cycles, sent.output_cycles);
+  EXPECT_EQ(got.cycles, sent.cycles);
+  EXPECT_EQ(got.counters, sent.counters);
+  EXPECT_EQ(got.requests, sent.requests);
+  EXPECT_EQ(got.seconds, sent.seconds);
+  EXPECT_EQ(got.error, sent.error);
+}
+
+TEST(RunInChildTest, AChildThatDiesOrThrowsIsAnError) {
+  EXPECT_EQ(run_in_child([]() -> RunResult { ::_exit(5); }).error,
+            "hls child exited with status 5");
+  EXPECT_EQ(run_in_child([]() -> RunResult { std::abort(); }).error,
+            "hls child killed by signal 6");
+  EXPECT_EQ(run_in_child([]() -> RunResult { throw std::runtime_error("no clock"); }).error,
+            "hls: no clock");
 }
 
 // --- scoreboard -------------------------------------------------------------------------

@@ -7,7 +7,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <stdexcept>
 #include <string>
+#include <type_traits>
 
 // Debian's libsystemc provides a main() that calls sc_main, so the library needs the symbol.
 // Our programs have their own main and start SystemC only here, so it is never called.
@@ -16,69 +18,98 @@ extern "C" int sc_main(int, char**) { return 1; }
 namespace tmu::tb {
 namespace {
 
-// A flat byte encoding of RunResult for the pipe.
-void put(std::string& out, const void* p, size_t n) { out.append(static_cast<const char*>(p), n); }
-void put_u64(std::string& out, uint64_t v) { put(out, &v, sizeof v); }
-void put_str(std::string& out, const std::string& s) {
-  put_u64(out, s.size());
-  out += s;
-}
+// RunResult through the pipe, its vectors' bytes written and read in place: a render's unit
+// sends hundreds of megabytes of transactions (256 bytes each), and building the message in a
+// string, reading it into another and decoding that copied them three more times (the copies
+// and their page faults were most of an hls render's system time).
+static_assert(std::is_trivially_copyable_v<Txn>);
 
-struct Reader {
-  const std::string& in;
-  size_t at = 0;
-  void get(void* p, size_t n) {
-    if (at + n > in.size()) throw std::runtime_error("hls child: truncated result");
-    std::memcpy(p, in.data() + at, n);
-    at += n;
+class PipeWriter {
+ public:
+  explicit PipeWriter(int fd) : fd_(fd) {}
+  bool ok() const { return ok_; }
+  void bytes(const void* p, size_t n) {
+    const auto* c = static_cast<const char*>(p);
+    while (ok_ && n > 0) {
+      const ssize_t k = ::write(fd_, c, n);
+      if (k <= 0) {
+        ok_ = false;
+        return;
+      }
+      c += k;
+      n -= static_cast<size_t>(k);
+    }
+  }
+  void u64(uint64_t v) { bytes(&v, sizeof v); }
+  void str(const std::string& s) {
+    u64(s.size());
+    bytes(s.data(), s.size());
+  }
+  template <typename T>
+  void vec(const std::vector<T>& v) {
+    u64(v.size());
+    bytes(v.data(), v.size() * sizeof(T));
+  }
+
+ private:
+  int fd_;
+  bool ok_ = true;
+};
+
+class PipeReader {
+ public:
+  explicit PipeReader(int fd) : fd_(fd) {}
+  void bytes(void* p, size_t n) {
+    auto* c = static_cast<char*>(p);
+    while (n > 0) {
+      const ssize_t k = ::read(fd_, c, n);
+      if (k <= 0) throw std::runtime_error("hls child: truncated result");
+      c += k;
+      n -= static_cast<size_t>(k);
+    }
   }
   uint64_t u64() {
     uint64_t v = 0;
-    get(&v, sizeof v);
+    bytes(&v, sizeof v);
     return v;
   }
   std::string str() {
-    const uint64_t n = u64();
-    if (at + n > in.size()) throw std::runtime_error("hls child: truncated result");
-    std::string s = in.substr(at, n);
-    at += n;
+    std::string s(u64(), '\0');
+    bytes(s.data(), s.size());
     return s;
   }
+  template <typename T>
+  void vec(std::vector<T>& v) {
+    v.resize(u64());
+    bytes(v.data(), v.size() * sizeof(T));
+  }
+
+ private:
+  int fd_;
 };
 
-std::string encode(const RunResult& r) {
-  std::string out;
-  put_u64(out, r.outputs.size());
-  for (size_t i = 0; i < r.outputs.size(); ++i) {
-    put(out, r.outputs[i].f.data(), sizeof r.outputs[i].f);
-    put_u64(out, r.output_cycles[i]);
-  }
-  put_u64(out, r.cycles);
-  put_u64(out, r.counters.size());
+bool send(int fd, const RunResult& r) {
+  PipeWriter w(fd);
+  w.vec(r.outputs);
+  w.vec(r.output_cycles);
+  w.u64(r.cycles);
+  w.u64(r.counters.size());
   for (const auto& [name, value] : r.counters) {
-    put_str(out, name);
-    put_u64(out, value);
+    w.str(name);
+    w.u64(value);
   }
-  put_u64(out, r.requests.size());
-  for (const std::vector<Txn>& channel : r.requests) {
-    put_u64(out, channel.size());
-    for (const Txn& t : channel) put(out, t.f.data(), sizeof t.f);
-  }
-  put(out, &r.seconds, sizeof r.seconds);
-  put_str(out, r.error);
-  return out;
+  w.u64(r.requests.size());
+  for (const std::vector<Txn>& channel : r.requests) w.vec(channel);
+  w.bytes(&r.seconds, sizeof r.seconds);
+  w.str(r.error);
+  return w.ok();
 }
 
-RunResult decode(const std::string& in) {
-  Reader rd{in};
+RunResult receive(int fd) {
+  PipeReader rd(fd);
   RunResult r;
-  const uint64_t n = rd.u64();
-  r.outputs.resize(n);
-  r.output_cycles.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    rd.get(r.outputs[i].f.data(), sizeof r.outputs[i].f);
-    r.output_cycles[i] = rd.u64();
-  }
+  rd.vec(r.outputs);
+  rd.vec(r.output_cycles);
   r.cycles = rd.u64();
   const uint64_t nc = rd.u64();
   for (uint64_t i = 0; i < nc; ++i) {
@@ -86,23 +117,10 @@ RunResult decode(const std::string& in) {
     r.counters.emplace_back(std::move(name), rd.u64());
   }
   r.requests.resize(rd.u64());
-  for (std::vector<Txn>& channel : r.requests) {
-    channel.resize(rd.u64());
-    for (Txn& t : channel) rd.get(t.f.data(), sizeof t.f);
-  }
-  rd.get(&r.seconds, sizeof r.seconds);
+  for (std::vector<Txn>& channel : r.requests) rd.vec(channel);
+  rd.bytes(&r.seconds, sizeof r.seconds);
   r.error = rd.str();
   return r;
-}
-
-bool write_all(int fd, const std::string& data) {
-  size_t done = 0;
-  while (done < data.size()) {
-    const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
-    if (n <= 0) return false;
-    done += static_cast<size_t>(n);
-  }
-  return true;
 }
 
 }  // namespace
@@ -127,27 +145,33 @@ RunResult run_in_child(const std::function<RunResult()>& fn) {
     } catch (const std::exception& e) {
       r.error = std::string("hls: ") + e.what();
     }
-    const bool ok = write_all(fds[1], encode(r));
+    const bool ok = send(fds[1], r);
     ::close(fds[1]);
     std::fflush(nullptr);
     ::_exit(ok ? 0 : 3);
   }
   ::close(fds[1]);
-  std::string data;
-  char buf[1 << 16];
-  ssize_t n;
-  while ((n = ::read(fds[0], buf, sizeof buf)) > 0) data.append(buf, static_cast<size_t>(n));
+  // Read before waiting: the child blocks on a full pipe until it is read. A child that dies
+  // mid-way leaves a truncated result, reported by its exit status below.
+  RunResult r;
+  std::string truncated;
+  try {
+    r = receive(fds[0]);
+  } catch (const std::runtime_error& e) {
+    truncated = e.what();
+  }
   ::close(fds[0]);
   int status = 0;
   ::waitpid(pid, &status, 0);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    RunResult r;
-    r.error = WIFSIGNALED(status)
-                  ? "hls child killed by signal " + std::to_string(WTERMSIG(status))
-                  : "hls child exited with status " + std::to_string(WEXITSTATUS(status));
-    return r;
+    RunResult failed;
+    failed.error = WIFSIGNALED(status)
+                       ? "hls child killed by signal " + std::to_string(WTERMSIG(status))
+                       : "hls child exited with status " + std::to_string(WEXITSTATUS(status));
+    return failed;
   }
-  return decode(data);
+  if (!truncated.empty()) throw std::runtime_error(truncated);
+  return r;
 }
 
 }  // namespace tmu::tb
