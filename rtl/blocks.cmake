@@ -562,6 +562,9 @@ tmu_mutant(texram_chip fp_round FILE footprint/tmu_footprint_average.sv
 tmu_mutant(texram_chip detail_level FILE texram/tmu_texram_detail.sv
   FROM "lambda_d = in_lambda_i + (Level <<< 2);" TO "lambda_d = in_lambda_i + Level * 3;"
   WHY "the detail map is read one level too fine (lambda + 3, not + 4)")
+tmu_mutant(texram_chip stream_lead FILE texram/tmu_texram_chip.sv
+  FROM "param_valid_i && param_lead_i == num_q &&" TO "param_valid_i &&"
+  WHY "a streamed parameter's lead is not checked: a pixel of another DRF is sampled on the streaming DRF's map")
 tmu_mutant(texram_chip unreset FILE texram/tmu_texram_chip.sv EXPECT x-leak
   FROM "      pixels_q    <= '0;\n" TO ""
   WHY "the pixel counter starts where its flops happen to be")

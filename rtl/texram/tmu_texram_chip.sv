@@ -21,7 +21,8 @@
 /// was sampled. After 7 steps the pixel ends where it is and stat_step_limit_o is set (sticky).
 ///
 /// One step at a time: the trilinear unit documents its configuration as quasi-static, so
-/// cfg_* (a DRF's fields) change only while it is empty (tmu_texram_step). States:
+/// cfg_* (a DRF's fields) change only while it is empty (tmu_texram_step); except that pixels
+/// whose chain is one plain texture step stream (StStream, below). States:
 ///   StIdle     drf and clut writes and a pixel's first parameter are taken
 ///   StCheck    the DRF number: 0 ends, the 8th step ends with the limit, a takes_coords DRF
 ///              (not the first) waits for a parameter, else the access
@@ -30,6 +31,18 @@
 ///   StWait     its sample, applied by the op (an emit waits for the output register)
 ///   StFinish   the colour: into the output register, or into tmu_specular_combine
 ///   StCombine  tmu_specular_combine's result into the output register
+///   StStream   pixels led by the same streamable DRF go into the trilinear unit one a clock
+///
+/// Streaming (the patent's rate, 000 §5: a sample an access): a DRF is streamable when its
+/// chain is that one step and nothing in it changes under the trilinear unit: op texture, link
+/// 0, neither footprint assembly nor the detail flag, and not DRF 7 (its cube faces' bases
+/// change with the pixel). Such a pixel's colour is its sample (C_d, no environment), so the
+/// pixels need no context of their own: the first is issued as usual (Idle, Check, Issue), and
+/// from then on each next parameter led by the same DRF goes straight into the unit while it is
+/// ready, up to MaxInFlight pixels in it, and each sample leaves as a colour (last 1) in order.
+/// A parameter led by another DRF, or a write, waits until the unit is empty; the sequencer
+/// then returns to Idle. Outputs, memory requests and counters are the one-at-a-time
+/// sequencer's (golden's), only sooner.
 /// Cycles per step with page hits, the output free: Check 1, Issue 1 and the trilinear unit's
 /// 12 from acceptance to its output (taken in Wait): 14 for a one-plane map, 17 for four byte
 /// planes, 1 more per page fault; with footprint assembly 22 + N (tmu_texram_step); a detail
@@ -114,8 +127,14 @@ module tmu_texram_chip (
     StIssue,
     StWait,
     StFinish,
-    StCombine
+    StCombine,
+    StStream
   } state_e;
+
+  // Pixels in the trilinear unit at once while streaming: more than its 12-cycle latency, so
+  // that one-plane samples issue one a clock.
+  localparam int unsigned MaxInFlight = 16;
+  localparam int unsigned InFlightW   = $clog2(MaxInFlight + 1);
 
   // ---- Registers -----------------------------------------------------------------------------
 
@@ -137,6 +156,7 @@ module tmu_texram_chip (
   logic                   out_last_q, out_last_d;
   tmu_pkg::stat_count_t   pixels_q, pixels_d, params_q, params_d, steps_q, steps_d;
   logic                   limit_q, limit_d;
+  logic [InFlightW-1:0]   in_flight_q, in_flight_d;  // streamed pixels in the unit
 
   // ---- The DRF file --------------------------------------------------------------------------
 
@@ -219,6 +239,16 @@ module tmu_texram_chip (
   // ---- The step: the current DRF's sample -----------------------------------------------------
 
   logic               step_req_valid, step_req_ready, step_out_valid, step_out_ready;
+  // While streaming the unit takes the parameter itself; else the pixel's registers.
+  logic               streaming;
+  tmu_pkg::tex_coord_t step_u, step_v;
+  tmu_pkg::lod_t      step_lambda;
+  tmu_pkg::rgba8888_t step_shade;
+  assign streaming   = state_q == StStream;
+  assign step_u      = streaming ? param_u_i : u_q;
+  assign step_v      = streaming ? param_v_i : v_q;
+  assign step_lambda = streaming ? param_lambda_i : lambda_q;
+  assign step_shade  = streaming ? param_shade_i : shade_q;
   logic               step_clut_ready;
   tmu_pkg::rgba8888_t step_rgba;
 
@@ -256,10 +286,10 @@ module tmu_texram_chip (
     .clut_rgba_i,
     .req_valid_i          (step_req_valid),
     .req_ready_o          (step_req_ready),
-    .req_u_i              (u_q),
-    .req_v_i              (v_q),
-    .req_lambda_i         (lambda_q),
-    .req_shade_i          (shade_q),
+    .req_u_i              (step_u),
+    .req_v_i              (step_v),
+    .req_lambda_i         (step_lambda),
+    .req_shade_i          (step_shade),
     .req_r1u_i            (r1u_q),
     .req_r1v_i            (r1v_q),
     .req_r2u_i            (r2u_q),
@@ -297,15 +327,23 @@ module tmu_texram_chip (
   logic out_free;  // the output register can load at this edge
   assign out_free = !out_valid_q || out_ready_i;
 
+  // The current DRF streams (see the header); a streamed parameter goes into the unit now.
+  logic streamable, stream_take;
+  assign streamable  = op == OpTexture && link == '0 && !footprint && !detail &&
+                       32'(num_q) != tmu_pkg::Drfs;
+  assign stream_take = streaming && param_valid_i && param_lead_i == num_q &&
+                       32'(in_flight_q) < MaxInFlight;
+
   assign drf_ready_o   = state_q == StIdle;
   assign clut_ready_o  = state_q == StIdle && step_clut_ready;
-  assign param_ready_o = state_q == StIdle || state_q == StParam;
+  assign param_ready_o = state_q == StIdle || state_q == StParam || (stream_take && step_req_ready);
   assign drf_fire      = drf_valid_i && drf_ready_o;
   assign clut_fire     = clut_valid_i && clut_ready_o;
   assign param_fire    = param_valid_i && param_ready_o;
 
-  assign step_req_valid = state_q == StIssue;
-  assign step_out_ready = state_q == StWait && (op != OpEmit || out_free);
+  assign step_req_valid = state_q == StIssue || stream_take;
+  assign step_out_ready = (state_q == StWait && (op != OpEmit || out_free)) ||
+                          (streaming && out_free);
   assign spec_in_valid  = state_q == StFinish && have_env_q;
   assign spec_out_ready = state_q == StCombine && out_free;
 
@@ -337,6 +375,7 @@ module tmu_texram_chip (
     params_d    = params_q;
     steps_d     = steps_q;
     limit_d     = limit_q;
+    in_flight_d = in_flight_q;
 
     if (param_fire) begin  // a parameter's coordinates (the first's shade and lead below)
       u_d      = param_u_i;
@@ -388,6 +427,11 @@ module tmu_texram_chip (
         if (step_req_ready) begin
           steps_d = steps_q + 1'b1;
           state_d = StWait;
+          // A pixel's only step, a plain texture: the next pixels may follow it into the unit.
+          if (step_q == '0 && streamable) begin
+            in_flight_d = InFlightW'(1);
+            state_d     = StStream;
+          end
         end
       end
       StWait: begin
@@ -439,6 +483,21 @@ module tmu_texram_chip (
           state_d     = StIdle;
         end
       end
+      StStream: begin
+        if (param_fire) begin  // another pixel of the same DRF: its only step issued
+          pixels_d = pixels_q + 1'b1;
+          steps_d  = steps_q + 1'b1;
+        end
+        if (step_out_valid && step_out_ready) begin  // a pixel's colour: its sample
+          out_valid_d = 1'b1;
+          out_rgba_d  = step_rgba;
+          out_last_d  = 1'b1;
+        end
+        in_flight_d = in_flight_q + InFlightW'(param_fire) -
+                      InFlightW'(step_out_valid && step_out_ready);
+        // Empty, and the next parameter (if any) is not this DRF's: back to one at a time.
+        if (in_flight_d == '0 && !stream_take) state_d = StIdle;
+      end
       default: state_d = StIdle;
     endcase
   end
@@ -457,6 +516,7 @@ module tmu_texram_chip (
       params_q    <= '0;
       steps_q     <= '0;
       limit_q     <= 1'b0;
+      in_flight_q <= '0;
     end else begin
       state_q     <= state_d;
       num_q       <= num_d;
@@ -470,6 +530,7 @@ module tmu_texram_chip (
       params_q    <= params_d;
       steps_q     <= steps_d;
       limit_q     <= limit_d;
+      in_flight_q <= in_flight_d;
     end
   end
 

@@ -1,7 +1,7 @@
 // What is the TEXRAM chip block's own (000 §14; docs/texram_chip.md "The chip block"; the
 // conformance suite, tests/conformance_test.cpp, checks what every block shares): the cycles
 // of a step and of a pixel on the one-step-at-a-time rtl sequencer, plain, with footprint
-// assembly and with a detail map.
+// assembly and with a detail map, and of the pixels it streams (one-step texture chains).
 #include "texram/chip/texram_chip.hpp"
 
 #include <gtest/gtest.h>
@@ -24,6 +24,10 @@ using texram::chip::PixelParameter;
 // The rtl's cycles per pixel: per step on a one-plane map at page hits, and per pixel besides.
 constexpr uint64_t kChipCyclesPerStep1 = 14;
 constexpr uint64_t kChipCyclesPerPixel = 3;
+// A pixel whose chain is one plain texture step streams behind the one before: an access a
+// clock, one for a one-plane map, four for four byte planes.
+constexpr uint64_t kChipCyclesStreamed1 = 1;
+constexpr uint64_t kChipCyclesStreamed4 = 4;
 // An environment sampled: the colour through tmu_specular_combine.
 constexpr uint64_t kChipCyclesCombine = 2;
 // Footprint assembly: tmu_footprint's 20 + N from request to colour against the trilinear
@@ -73,8 +77,8 @@ std::vector<Txn> chain_items(const ChipMapPlacement& m, int length, int pixels,
 // Cycles between colours, back to back without stalls, all page hits: 3 + 14 per step for a
 // one-plane map (per pixel Idle, the last Check, Finish; per step Check, Issue and the
 // trilinear unit's 12 from acceptance to its output, taken in Wait), 3 more per step for four
-// byte planes, 2 more when an environment makes the colour go through the combine. The hls
-// model is sequential too (its timing is its own).
+// byte planes, 2 more when an environment makes the colour go through the combine; a chain of
+// one texture step streams (1 or 4). The hls model is sequential (its timing is its own).
 TEST(TexramChipTest, CyclesPerStep) {
   const TexramChipBlock block({});
   const ChipScene& s = block.scene();
@@ -86,8 +90,9 @@ TEST(TexramChipTest, CyclesPerStep) {
       one = one ? one : &m;
   }
   ASSERT_NE(one, nullptr);
-  for (const auto& [map, per_step] :
-       {std::pair{one, kChipCyclesPerStep1}, std::pair{four, kChipCyclesPerStep1 + 3}}) {
+  for (const auto& [map, per_step, streamed] :
+       {std::tuple{one, kChipCyclesPerStep1, kChipCyclesStreamed1},
+        std::tuple{four, kChipCyclesPerStep1 + 3, kChipCyclesStreamed4}}) {
     for (int length : {1, 2, 7}) {
       for (const DrfOp last : {DrfOp::kTexture, DrfOp::kEnvironment}) {
         const RunResult r =
@@ -95,9 +100,12 @@ TEST(TexramChipTest, CyclesPerStep) {
         ASSERT_TRUE(r.error.empty()) << r.error;
         ASSERT_EQ(r.output_cycles.size(), 20u);
         const uint64_t combine = last == DrfOp::kEnvironment ? kChipCyclesCombine : 0;
+        const uint64_t per_pixel =
+            length == 1 && last == DrfOp::kTexture
+                ? streamed
+                : kChipCyclesPerPixel + static_cast<uint64_t>(length) * per_step + combine;
         for (size_t k = 2; k < r.output_cycles.size(); ++k) {
-          EXPECT_EQ(r.output_cycles[k] - r.output_cycles[k - 1],
-                    kChipCyclesPerPixel + static_cast<uint64_t>(length) * per_step + combine)
+          EXPECT_EQ(r.output_cycles[k] - r.output_cycles[k - 1], per_pixel)
               << "length " << length << ", op " << name(last) << ", output " << k;
         }
       }

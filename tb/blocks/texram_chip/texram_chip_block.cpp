@@ -91,6 +91,14 @@ Walk walk(const DrfFile& file, int lead) {
   return w;
 }
 
+// Whether DRF n's pixels stream in the rtl (tmu_texram_chip's rule): one plain texture step, not
+// DRF 7 (whose cube faces' bases change with the pixel).
+bool streams(const DrfFile& file, int n) {
+  if (n < 1 || n >= texram::chip::kDrfs) return false;
+  const Drf& d = file[static_cast<size_t>(n - 1)];
+  return d.op == DrfOp::kTexture && d.link == 0 && !d.footprint && !d.detail;
+}
+
 // The golden chip over a run: DRF and CLUT writes as they come; a pixel's parameters are
 // gathered until it has as many as its chain takes, then it runs, its outputs and its
 // accesses (the requests) at its last parameter.
@@ -955,6 +963,9 @@ constexpr const char* kDetailMinus1 = "detail map, lambda = -1";
 constexpr const char* kDetailBelow4 = "detail map, lambda below -4";
 constexpr const char* kDetailProbes = "detail map under footprint assembly";
 constexpr const char* kExtreme = "texture and reflectance with detail maps, then environment";
+// The rtl streams pixels whose chain is one plain texture step (tmu_texram_chip's StStream).
+constexpr const char* kStreamed = "a one-step texture pixel right behind one of the same DRF";
+constexpr const char* kStreamLeft = "another DRF's pixel right behind a one-step texture pixel";
 
 }  // namespace
 
@@ -965,7 +976,8 @@ std::vector<std::string> TexramChipBlock::coverage_cases() const {
                {kChain7,      kStepLimit,      kNewCoords,       kLead0,         kWriteBusy,
                 kLambdaMin,   kLambdaMax,      kFaceHigh,        kSphere,        kFootprint,
                 kFootprint16, kFootprintSides, kFootprintBelow0, kDetailReplace, kDetailModulate,
-                kDetailBlend, kDetailMinus1,   kDetailBelow4,    kDetailProbes,  kExtreme});
+                kDetailBlend, kDetailMinus1,   kDetailBelow4,    kDetailProbes,  kExtreme,
+                kStreamed,    kStreamLeft});
   return cases;
 }
 
@@ -1042,6 +1054,14 @@ void TexramChipBlock::cover(const std::vector<Txn>& items, size_t index, const T
     ++cov[kExtreme];
   }
   if (index + 1 < items.size() && items[index + 1].f[0] != D::op_param) ++cov[kWriteBusy];
+  // The item before this pixel is the last parameter of the pixel before it (no write between).
+  if (first > 0 && items[first - 1].f[0] == D::op_param) {
+    const int before = chip_parameter(items[first - 1]).lead;
+    const Walk b = walk(cover_file_, before);
+    if (b.drfs.size() == 1 && streams(cover_file_, before)) {
+      ++cov[before == lead.lead && w.drfs.size() == 1 ? kStreamed : kStreamLeft];
+    }
+  }
 }
 
 }  // namespace tmu::tb
