@@ -43,8 +43,8 @@ for scene in "${scenes[@]}"; do
   # pixels: hls (the SystemC models, sequential: 3 to 5 times rtl's time) renders it, its
   # models shown equal item by item in the conformance suite and at full size by --long's
   # render_scene_full_NAME (label long); a fly-over's hls run takes its first four frames. And
-  # footprint materials on the chips: one step in flight makes the full frame about 30 s at rtl,
-  # so the chips render the copy too (the full frame in render_scene_full_NAME).
+  # footprint materials on the chips: the full frame takes about 10 s at rtl (grazing), so the
+  # chips render the copy too (the full frame in render_scene_full_NAME).
   half="$work/$name-half.json"
   perl -pe 's{"resolution": \[(\d+), (\d+)\]}{sprintf(q("resolution": [%d, %d]), $1 / 2, $2 / 2)}e;
     s{"((?:images|models)/)}{"'"$root"'/scenes/$1}g' "$scene" >"$half"

@@ -22,7 +22,7 @@
 ///
 /// One step at a time: the trilinear unit documents its configuration as quasi-static, so
 /// cfg_* (a DRF's fields) change only while it is empty (tmu_texram_step); except that pixels
-/// whose chain is one plain texture step stream (StStream, below). States:
+/// whose chain is one texture step stream (StStream, below). States:
 ///   StIdle     drf and clut writes and a pixel's first parameter are taken
 ///   StCheck    the DRF number: 0 ends, the 8th step ends with the limit, a takes_coords DRF
 ///              (not the first) waits for a parameter, else the access
@@ -35,8 +35,10 @@
 ///
 /// Streaming (the patent's rate, 000 §5: a sample an access): a DRF is streamable when its
 /// chain is that one step and nothing in it changes under the trilinear unit: op texture, link
-/// 0, neither footprint assembly nor the detail flag, and not DRF 7 (its cube faces' bases
-/// change with the pixel). Such a pixel's colour is its sample (C_d, no environment), so the
+/// 0, no detail flag (its reads alternate three DRFs' maps), and not DRF 7 (its cube faces'
+/// bases change with the pixel); with footprint assembly or without (the probes of the next
+/// pixels follow the ones before, one a clock). Such a pixel's colour is its sample (C_d, no
+/// environment), so the
 /// pixels need no context of their own: the first is issued as usual (Idle, Check, Issue), and
 /// from then on each next parameter led by the same DRF goes straight into the unit while it is
 /// ready, up to MaxInFlight pixels in it, and each sample leaves as a colour (last 1) in order.
@@ -244,7 +246,12 @@ module tmu_texram_chip (
   tmu_pkg::tex_coord_t step_u, step_v;
   tmu_pkg::lod_t      step_lambda;
   tmu_pkg::rgba8888_t step_shade;
+  tmu_pkg::tex_deriv_t step_r1u, step_r1v, step_r2u, step_r2v;
   assign streaming   = state_q == StStream;
+  assign step_r1u    = streaming ? param_r1u_i : r1u_q;
+  assign step_r1v    = streaming ? param_r1v_i : r1v_q;
+  assign step_r2u    = streaming ? param_r2u_i : r2u_q;
+  assign step_r2v    = streaming ? param_r2v_i : r2v_q;
   assign step_u      = streaming ? param_u_i : u_q;
   assign step_v      = streaming ? param_v_i : v_q;
   assign step_lambda = streaming ? param_lambda_i : lambda_q;
@@ -290,10 +297,10 @@ module tmu_texram_chip (
     .req_v_i              (step_v),
     .req_lambda_i         (step_lambda),
     .req_shade_i          (step_shade),
-    .req_r1u_i            (r1u_q),
-    .req_r1v_i            (r1v_q),
-    .req_r2u_i            (r2u_q),
-    .req_r2v_i            (r2v_q),
+    .req_r1u_i            (step_r1u),
+    .req_r1v_i            (step_r1v),
+    .req_r2u_i            (step_r2u),
+    .req_r2v_i            (step_r2v),
     .mem_req_valid_o,
     .mem_req_ready_i,
     .mem_req_en_o,
@@ -329,7 +336,7 @@ module tmu_texram_chip (
 
   // The current DRF streams (see the header); a streamed parameter goes into the unit now.
   logic streamable, stream_take;
-  assign streamable  = op == OpTexture && link == '0 && !footprint && !detail &&
+  assign streamable  = op == OpTexture && link == '0 && !detail &&
                        32'(num_q) != tmu_pkg::Drfs;
   assign stream_take = streaming && param_valid_i && param_lead_i == num_q &&
                        32'(in_flight_q) < MaxInFlight;

@@ -345,7 +345,10 @@ module tmu_texram_step (
   logic               avg_in_ready, avg_out_valid;
   tmu_pkg::rgba8888_t avg_out_rgba;
 
-  tmu_footprint_average #(.Depth(2)) u_average (
+  // A k per fragment from the marcher's start to its last probe's colour: 16 covers the
+  // trilinear unit's samples in flight when the chip streams one-probe fragments (as
+  // tmu_footprint's); 2 held its pixels two at a time, 13 cycles apart.
+  tmu_footprint_average #(.Depth(16)) u_average (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
     .frag_push_i   (frag_push),

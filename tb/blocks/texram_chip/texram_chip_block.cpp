@@ -91,12 +91,13 @@ Walk walk(const DrfFile& file, int lead) {
   return w;
 }
 
-// Whether DRF n's pixels stream in the rtl (tmu_texram_chip's rule): one plain texture step, not
-// DRF 7 (whose cube faces' bases change with the pixel).
+// Whether DRF n's pixels stream in the rtl (tmu_texram_chip's rule): one texture step (with
+// footprint assembly or not) without a detail map, not DRF 7 (its cube faces' bases change with
+// the pixel).
 bool streams(const DrfFile& file, int n) {
   if (n < 1 || n >= texram::chip::kDrfs) return false;
   const Drf& d = file[static_cast<size_t>(n - 1)];
-  return d.op == DrfOp::kTexture && d.link == 0 && !d.footprint && !d.detail;
+  return d.op == DrfOp::kTexture && d.link == 0 && !d.detail;
 }
 
 // The golden chip over a run: DRF and CLUT writes as they come; a pixel's parameters are
@@ -963,8 +964,10 @@ constexpr const char* kDetailMinus1 = "detail map, lambda = -1";
 constexpr const char* kDetailBelow4 = "detail map, lambda below -4";
 constexpr const char* kDetailProbes = "detail map under footprint assembly";
 constexpr const char* kExtreme = "texture and reflectance with detail maps, then environment";
-// The rtl streams pixels whose chain is one plain texture step (tmu_texram_chip's StStream).
+// The rtl streams pixels whose chain is one texture step without a detail map (StStream).
 constexpr const char* kStreamed = "a one-step texture pixel right behind one of the same DRF";
+constexpr const char* kStreamedFootprint =
+    "a one-step footprint pixel right behind one of the same DRF";
 constexpr const char* kStreamLeft = "another DRF's pixel right behind a one-step texture pixel";
 
 }  // namespace
@@ -973,11 +976,11 @@ std::vector<std::string> TexramChipBlock::coverage_cases() const {
   std::vector<std::string> cases(std::begin(kOpNames), std::end(kOpNames));
   cases.insert(cases.end(), std::begin(kFaces), std::end(kFaces));
   cases.insert(cases.end(),
-               {kChain7,      kStepLimit,      kNewCoords,       kLead0,         kWriteBusy,
-                kLambdaMin,   kLambdaMax,      kFaceHigh,        kSphere,        kFootprint,
-                kFootprint16, kFootprintSides, kFootprintBelow0, kDetailReplace, kDetailModulate,
-                kDetailBlend, kDetailMinus1,   kDetailBelow4,    kDetailProbes,  kExtreme,
-                kStreamed,    kStreamLeft});
+               {kChain7,      kStepLimit,         kNewCoords,       kLead0,         kWriteBusy,
+                kLambdaMin,   kLambdaMax,         kFaceHigh,        kSphere,        kFootprint,
+                kFootprint16, kFootprintSides,    kFootprintBelow0, kDetailReplace, kDetailModulate,
+                kDetailBlend, kDetailMinus1,      kDetailBelow4,    kDetailProbes,  kExtreme,
+                kStreamed,    kStreamedFootprint, kStreamLeft});
   return cases;
 }
 
@@ -1059,7 +1062,12 @@ void TexramChipBlock::cover(const std::vector<Txn>& items, size_t index, const T
     const int before = chip_parameter(items[first - 1]).lead;
     const Walk b = walk(cover_file_, before);
     if (b.drfs.size() == 1 && streams(cover_file_, before)) {
-      ++cov[before == lead.lead && w.drfs.size() == 1 ? kStreamed : kStreamLeft];
+      if (before != lead.lead) {
+        ++cov[kStreamLeft];
+      } else {
+        ++cov[kStreamed];
+        if (cover_file_[static_cast<size_t>(before - 1)].footprint) ++cov[kStreamedFootprint];
+      }
     }
   }
 }
