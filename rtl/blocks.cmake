@@ -565,6 +565,9 @@ tmu_mutant(texram_chip detail_level FILE texram/tmu_texram_detail.sv
 tmu_mutant(texram_chip stream_lead FILE texram/tmu_texram_chip.sv
   FROM "param_valid_i && param_lead_i == num_q &&" TO "param_valid_i &&"
   WHY "a streamed parameter's lead is not checked: a pixel of another DRF is sampled on the streaming DRF's map")
+tmu_mutant(texram_chip stream_emit FILE texram/tmu_texram_chip.sv
+  FROM "out_last_d   = op != OpEmit;" TO "out_last_d   = 1'b1;"
+  WHY "a streamed emit's sample leaves as the pixel's colour (last 1), and its colour after it as another pixel's")
 tmu_mutant(texram_chip unreset FILE texram/tmu_texram_chip.sv EXPECT x-leak
   FROM "      pixels_q    <= '0;\n" TO ""
   WHY "the pixel counter starts where its flops happen to be")

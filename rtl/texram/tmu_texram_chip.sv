@@ -34,11 +34,12 @@
 ///   StStream   pixels led by the same streamable DRF go into the trilinear unit one a clock
 ///
 /// Streaming (the patent's rate, 000 §5: a sample an access): a DRF is streamable when its
-/// chain is that one step and nothing in it changes under the trilinear unit: op texture, link
-/// 0, no detail flag (its reads alternate three DRFs' maps), and not DRF 7 (its cube faces'
-/// bases change with the pixel); with footprint assembly or without (the probes of the next
-/// pixels follow the ones before, one a clock). Such a pixel's colour is its sample (C_d, no
-/// environment), so the
+/// chain is that one step and nothing in it changes under the trilinear unit: op texture or
+/// emit, link 0, no detail flag (its reads alternate three DRFs' maps), and not DRF 7 (its cube
+/// faces' bases change with the pixel); with footprint assembly or without (the probes of the
+/// next pixels follow the ones before, one a clock). Such a pixel's colour is its sample (C_d,
+/// no environment), or for an emit its sample (last 0) and then C_d = 0 (last 1, the next
+/// clock), so the
 /// pixels need no context of their own: the first is issued as usual (Idle, Check, Issue), and
 /// from then on each next parameter led by the same DRF goes straight into the unit while it is
 /// ready, up to MaxInFlight pixels in it, and each sample leaves as a colour (last 1) in order.
@@ -159,6 +160,7 @@ module tmu_texram_chip (
   tmu_pkg::stat_count_t   pixels_q, pixels_d, params_q, params_d, steps_q, steps_d;
   logic                   limit_q, limit_d;
   logic [InFlightW-1:0]   in_flight_q, in_flight_d;  // streamed pixels in the unit
+  logic                   colour_due_q, colour_due_d;  // a streamed emit's colour to send
 
   // ---- The DRF file --------------------------------------------------------------------------
 
@@ -336,7 +338,7 @@ module tmu_texram_chip (
 
   // The current DRF streams (see the header); a streamed parameter goes into the unit now.
   logic streamable, stream_take;
-  assign streamable  = op == OpTexture && link == '0 && !detail &&
+  assign streamable  = (op == OpTexture || op == OpEmit) && link == '0 && !detail &&
                        32'(num_q) != tmu_pkg::Drfs;
   assign stream_take = streaming && param_valid_i && param_lead_i == num_q &&
                        32'(in_flight_q) < MaxInFlight;
@@ -350,7 +352,7 @@ module tmu_texram_chip (
 
   assign step_req_valid = state_q == StIssue || stream_take;
   assign step_out_ready = (state_q == StWait && (op != OpEmit || out_free)) ||
-                          (streaming && out_free);
+                          (streaming && out_free && !colour_due_q);
   assign spec_in_valid  = state_q == StFinish && have_env_q;
   assign spec_out_ready = state_q == StCombine && out_free;
 
@@ -383,6 +385,7 @@ module tmu_texram_chip (
     steps_d     = steps_q;
     limit_d     = limit_q;
     in_flight_d = in_flight_q;
+    colour_due_d = colour_due_q;
 
     if (param_fire) begin  // a parameter's coordinates (the first's shade and lead below)
       u_d      = param_u_i;
@@ -496,14 +499,20 @@ module tmu_texram_chip (
           steps_d  = steps_q + 1'b1;
         end
         if (step_out_valid && step_out_ready) begin  // a pixel's colour: its sample
-          out_valid_d = 1'b1;
-          out_rgba_d  = step_rgba;
-          out_last_d  = 1'b1;
+          out_valid_d  = 1'b1;
+          out_rgba_d   = step_rgba;
+          out_last_d   = op != OpEmit;
+          colour_due_d = op == OpEmit;
+        end else if (colour_due_q && out_free) begin  // an emit's pixel ends: C_d, still 0
+          out_valid_d  = 1'b1;
+          out_rgba_d   = '0;
+          out_last_d   = 1'b1;
+          colour_due_d = 1'b0;
         end
         in_flight_d = in_flight_q + InFlightW'(param_fire) -
                       InFlightW'(step_out_valid && step_out_ready);
         // Empty, and the next parameter (if any) is not this DRF's: back to one at a time.
-        if (in_flight_d == '0 && !stream_take) state_d = StIdle;
+        if (in_flight_d == '0 && !colour_due_d && !stream_take) state_d = StIdle;
       end
       default: state_d = StIdle;
     endcase
@@ -524,6 +533,7 @@ module tmu_texram_chip (
       steps_q     <= '0;
       limit_q     <= 1'b0;
       in_flight_q <= '0;
+      colour_due_q <= 1'b0;
     end else begin
       state_q     <= state_d;
       num_q       <= num_d;
@@ -538,6 +548,7 @@ module tmu_texram_chip (
       steps_q     <= steps_d;
       limit_q     <= limit_d;
       in_flight_q <= in_flight_d;
+      colour_due_q <= colour_due_d;
     end
   end
 

@@ -110,6 +110,37 @@ TEST(TexramChipTest, CyclesPerStep) {
   }
 }
 
+// A one-step emit chain (a bump map's pass) streams too: each pixel gives its sample (last 0)
+// and then its colour (last 1) the next clock, so a pixel takes 2 cycles on a one-plane map (the
+// unit's one sample a clock is not the limit: the output is) and 4 on a four-plane map.
+TEST(TexramChipTest, StreamedEmitPixels) {
+  const TexramChipBlock block({});
+  const ChipScene& s = block.scene();
+  const ChipMapPlacement* one = nullptr;
+  for (const ChipMapPlacement& m : s.maps) {
+    if (!four_planes(m.setup.config.kind)) one = one ? one : &m;
+  }
+  ASSERT_NE(one, nullptr);
+  for (const auto& [map, per_pixel] :
+       {std::pair{one, uint64_t{2}}, std::pair{&s.maps[0], uint64_t{4}}}) {
+    ASSERT_TRUE(four_planes(s.maps[0].setup.config.kind));
+    const RunResult r =
+        block.engine("rtl")->run(chain_items(*map, 1, 20, DrfOp::kEmit), RunOptions{});
+    ASSERT_TRUE(r.error.empty()) << r.error;
+    ASSERT_EQ(r.outputs.size(), 40u);
+    for (size_t k = 0; k < r.outputs.size(); ++k) {
+      EXPECT_EQ(r.outputs[k].f[desc::texram_chip::out_last], k % 2) << "output " << k;
+      if (k % 2 == 1) {
+        EXPECT_EQ(r.outputs[k].f[desc::texram_chip::out_rgba], 0u) << "an emit chain's C_d";
+        EXPECT_EQ(r.output_cycles[k] - r.output_cycles[k - 1], 1u) << "output " << k;
+      }
+      if (k >= 4 && k % 2 == 1) {
+        EXPECT_EQ(r.output_cycles[k] - r.output_cycles[k - 2], per_pixel) << "output " << k;
+      }
+    }
+  }
+}
+
 // Pixels led by DRF 1 of `file`, all at `p`, back to back: the rtl's cycles between colours are
 // `per_pixel` plus one per slow access (a page fault) of the pixel, which golden's page model
 // counts.

@@ -91,13 +91,13 @@ Walk walk(const DrfFile& file, int lead) {
   return w;
 }
 
-// Whether DRF n's pixels stream in the rtl (tmu_texram_chip's rule): one texture step (with
-// footprint assembly or not) without a detail map, not DRF 7 (its cube faces' bases change with
-// the pixel).
+// Whether DRF n's pixels stream in the rtl (tmu_texram_chip's rule): one texture or emit step
+// (with footprint assembly or not) without a detail map, not DRF 7 (its cube faces' bases change
+// with the pixel).
 bool streams(const DrfFile& file, int n) {
   if (n < 1 || n >= texram::chip::kDrfs) return false;
   const Drf& d = file[static_cast<size_t>(n - 1)];
-  return d.op == DrfOp::kTexture && d.link == 0 && !d.detail;
+  return (d.op == DrfOp::kTexture || d.op == DrfOp::kEmit) && d.link == 0 && !d.detail;
 }
 
 // The golden chip over a run: DRF and CLUT writes as they come; a pixel's parameters are
@@ -964,11 +964,12 @@ constexpr const char* kDetailMinus1 = "detail map, lambda = -1";
 constexpr const char* kDetailBelow4 = "detail map, lambda below -4";
 constexpr const char* kDetailProbes = "detail map under footprint assembly";
 constexpr const char* kExtreme = "texture and reflectance with detail maps, then environment";
-// The rtl streams pixels whose chain is one texture step without a detail map (StStream).
-constexpr const char* kStreamed = "a one-step texture pixel right behind one of the same DRF";
+// The rtl streams pixels whose chain is one texture or emit step without a detail map (StStream).
+constexpr const char* kStreamed = "a one-step pixel right behind one of the same DRF";
 constexpr const char* kStreamedFootprint =
     "a one-step footprint pixel right behind one of the same DRF";
-constexpr const char* kStreamLeft = "another DRF's pixel right behind a one-step texture pixel";
+constexpr const char* kStreamedEmit = "a one-step emit pixel right behind one of the same DRF";
+constexpr const char* kStreamLeft = "another DRF's pixel right behind a one-step pixel";
 
 }  // namespace
 
@@ -980,7 +981,7 @@ std::vector<std::string> TexramChipBlock::coverage_cases() const {
                 kLambdaMin,   kLambdaMax,         kFaceHigh,        kSphere,        kFootprint,
                 kFootprint16, kFootprintSides,    kFootprintBelow0, kDetailReplace, kDetailModulate,
                 kDetailBlend, kDetailMinus1,      kDetailBelow4,    kDetailProbes,  kExtreme,
-                kStreamed,    kStreamedFootprint, kStreamLeft});
+                kStreamed,    kStreamedFootprint, kStreamedEmit,    kStreamLeft});
   return cases;
 }
 
@@ -1066,7 +1067,9 @@ void TexramChipBlock::cover(const std::vector<Txn>& items, size_t index, const T
         ++cov[kStreamLeft];
       } else {
         ++cov[kStreamed];
-        if (cover_file_[static_cast<size_t>(before - 1)].footprint) ++cov[kStreamedFootprint];
+        const Drf& d = cover_file_[static_cast<size_t>(before - 1)];
+        if (d.footprint) ++cov[kStreamedFootprint];
+        if (d.op == DrfOp::kEmit) ++cov[kStreamedEmit];
       }
     }
   }
