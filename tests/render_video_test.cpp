@@ -285,6 +285,44 @@ TEST(VideoRenderTest, AVideoInAChainWithABumpMapOrAnEnvironment) {
   fs::remove_all(dir);
 }
 
+// A video with a detail map (000 §9 on a §11 map): the texture DRF of the video, then its offsets
+// and detail DRFs; the detail path reads the video's texels at the DRF's base, which the swap
+// moves every frame. A 4 x 4 video magnified on the quad (lambda below 0 on most of it): every
+// frame rtl = golden on the chip, and the frames differ from the same video without the detail.
+TEST(VideoRenderTest, AVideoWithADetailMap) {
+  const fs::path dir = temp_dir("detail");
+  const std::string detail =
+      R"(, "detail": {"map": {"pattern": "noise", "size": [32, 32], "seed": 3}, "combine": "modulate"})";
+  std::vector<std::vector<ImageRgb8>> frames;
+  for (const std::string extra : {std::string(), detail}) {
+    SCOPED_TRACE(extra.empty() ? "without" : "with the detail map");
+    const fs::path scene = write_scene(dir, generated(false, 1, 2, 4), extra);
+    const fs::path out = dir / (extra.empty() ? "plain" : "detail");
+    const RenderOptions o = checked_on_a_chip(Level::kRtl, out);
+    std::ostringstream log;
+    VideoRenderReport rep;
+    EXPECT_EQ(render_video(scene.string(), o, {0, 1}, log, &rep), 0) << log.str();
+    ASSERT_EQ(rep.frames.size(), 2u);
+    EXPECT_EQ(rep.frames[0].render.chips[0],
+              extra.empty() ? "screen: chip 0, DRF 1" : "screen: chip 0, DRF 1 2 3");
+    EXPECT_TRUE(rep.match());
+    EXPECT_NE(rep.frames[0].front, rep.frames[1].front);  // the swap moved the base between
+    frames.emplace_back();
+    for (int f = 0; f < 2; ++f) {
+      frames.back().push_back(
+          read_image((out / fmt::format("video.frame-{:04d}.png", f)).string()));
+    }
+  }
+  ASSERT_EQ(frames.size(), 2u);
+  for (size_t f = 0; f < 2; ++f) {
+    size_t differ = 0;
+    for (size_t i = 0; i < frames[0][f].pixels.size(); ++i)
+      differ += !(frames[0][f].pixels[i] == frames[1][f].pixels[i]);
+    EXPECT_GT(differ, frames[0][f].pixels.size() / 20) << "frame " << f << ": the detail map shows";
+  }
+  fs::remove_all(dir);
+}
+
 // The mipgen block's comparison can fail: one cell of the front buffer changed is one write that
 // differs.
 TEST(VideoRenderTest, TheMipgenBlockCheckCatchesABrokenBuffer) {

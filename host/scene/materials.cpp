@@ -154,7 +154,6 @@ void check_video_material(const JsonNode& node, Material& m) {
     node.at("mipmaps").fail("a video's pyramid is made by its own mipmap generator (000 §12)");
   if (m.unit == Material::Unit::kLowcost)
     video.fail("a video map is the TEXRAM's (not unit lowcost)");
-  if (m.detail) video.fail("a video map with a detail map is not supported yet");
   if (m.order == Material::Order::kTexture || m.order == Material::Order::kComposed)
     video.fail("orders texture and composed sample at the vertices, not through the chip");
 }

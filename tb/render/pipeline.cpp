@@ -132,39 +132,38 @@ Pipeline::Pipeline(const host::Scene& scene, Level level, int chips, const Video
            "video_port, mipgen and video_rows to the chip is not in hardware yet; the mipgen "
            "block runs at the engine beside it over each frame, compared cell by cell "
            "(render/video_mipgen, docs/video.md)"});
-      if (mat.uses_normal()) mt.effects = build_effect_maps(scene, mat);  // the rest of its chain
-      textures_.push_back(std::move(mt));
-      continue;
-    }
-    try {
-      const bool ccc_file = mat.texture.kind == host::TextureSource::Kind::kCcc;
-      if (mat.unit == host::Material::Unit::kLowcost) {
-        ccc::Texture tex =
-            ccc_file ? ccc::read_ccc(mat.texture.path) : ccc::encode(source_image(mat.texture));
-        mt.size = {static_cast<int>(tex.width), static_cast<int>(tex.height)};
-        mt.ccc = std::make_shared<const ccc::Texture>(std::move(tex));
-      } else {
-        texram::TexramTexture tex =
-            ccc_file ? texram::import_ccc(ccc::read_ccc(mat.texture.path))
-                     : texram::import_image(source_image(mat.texture), mat.sampler.kind,
-                                            mat.sampler.single_channel);
-        // The real-time mipmap generator runs when the first fragment of the material needs
-        // the texture (shade()): a material with none in the frame or band builds no unit.
-        mt.mipgen_pending =
-            mat.mipmaps == host::Material::Mipmaps::kMipgen && level != Level::kIdeal;
-        mt.size = {static_cast<int>(tex.geometry.texel_width(0)),
-                   static_cast<int>(tex.geometry.texel_height(0))};
-        if (level == Level::kIdeal)
-          mt.ideal =
-              std::make_shared<const texram::IdealTexture>(texram::ideal_texture(tex.source));
-        mt.texram = std::make_shared<const texram::TexramTexture>(std::move(tex));
+    } else {
+      try {
+        const bool ccc_file = mat.texture.kind == host::TextureSource::Kind::kCcc;
+        if (mat.unit == host::Material::Unit::kLowcost) {
+          ccc::Texture tex =
+              ccc_file ? ccc::read_ccc(mat.texture.path) : ccc::encode(source_image(mat.texture));
+          mt.size = {static_cast<int>(tex.width), static_cast<int>(tex.height)};
+          mt.ccc = std::make_shared<const ccc::Texture>(std::move(tex));
+        } else {
+          texram::TexramTexture tex =
+              ccc_file ? texram::import_ccc(ccc::read_ccc(mat.texture.path))
+                       : texram::import_image(source_image(mat.texture), mat.sampler.kind,
+                                              mat.sampler.single_channel);
+          // The real-time mipmap generator runs when the first fragment of the material needs
+          // the texture (shade()): a material with none in the frame or band builds no unit.
+          mt.mipgen_pending =
+              mat.mipmaps == host::Material::Mipmaps::kMipgen && level != Level::kIdeal;
+          mt.size = {static_cast<int>(tex.geometry.texel_width(0)),
+                     static_cast<int>(tex.geometry.texel_height(0))};
+          if (level == Level::kIdeal)
+            mt.ideal =
+                std::make_shared<const texram::IdealTexture>(texram::ideal_texture(tex.source));
+          mt.texram = std::make_shared<const texram::TexramTexture>(std::move(tex));
+        }
+      } catch (const InputError& e) {
+        throw InputError(scene.path, field, e.what());
+      } catch (const std::invalid_argument& e) {
+        throw InputError(scene.path, field, e.what());
       }
-    } catch (const InputError& e) {
-      throw InputError(scene.path, field, e.what());
-    } catch (const std::invalid_argument& e) {
-      throw InputError(scene.path, field, e.what());
     }
-    if (mat.uses_normal()) mt.effects = build_effect_maps(scene, mat);
+    if (mat.uses_normal()) mt.effects = build_effect_maps(scene, mat);  // the rest of its chain
+    // A video's detail maps too: its level 0 is the video's frame size, every frame.
     if (mat.has_detail()) {
       // Only the chip has the detail path (its offsets and detail DRFs): the separate units have
       // none, so at golden, hls and rtl a detail scene renders on chips or not at all. The ideal
