@@ -39,13 +39,14 @@
 /// faces' bases change with the pixel); with footprint assembly or without (the probes of the
 /// next pixels follow the ones before, one a clock). Such a pixel's colour is its sample (C_d,
 /// no environment), or for an emit its sample (last 0) and then C_d = 0 (last 1, the next
-/// clock), so the
-/// pixels need no context of their own: the first is issued as usual (Idle, Check, Issue), and
-/// from then on each next parameter led by the same DRF goes straight into the unit while it is
-/// ready, up to MaxInFlight pixels in it, and each sample leaves as a colour (last 1) in order.
+/// clock), so the pixels need no context of their own: the first is issued as usual (Idle,
+/// Check, Issue), and from then on each next parameter led by the same DRF goes straight into
+/// the unit while it is ready, up to MaxInFlight pixels in it, and each sample leaves in order.
 /// A parameter led by another DRF, or a write, waits until the unit is empty; the sequencer
 /// then returns to Idle. Outputs, memory requests and counters are the one-at-a-time
-/// sequencer's (golden's), only sooner.
+/// sequencer's (golden's), only sooner: 1 cycle a pixel on a one-plane map, 4 on four planes,
+/// N with N footprint probes, 2 for an emit (tests/blocks/texram_chip_test.cpp).
+///
 /// Cycles per step with page hits, the output free: Check 1, Issue 1 and the trilinear unit's
 /// 12 from acceptance to its output (taken in Wait): 14 for a one-plane map, 17 for four byte
 /// planes, 1 more per page fault; with footprint assembly 22 + N (tmu_texram_step); a detail
@@ -250,14 +251,14 @@ module tmu_texram_chip (
   tmu_pkg::rgba8888_t step_shade;
   tmu_pkg::tex_deriv_t step_r1u, step_r1v, step_r2u, step_r2v;
   assign streaming   = state_q == StStream;
-  assign step_r1u    = streaming ? param_r1u_i : r1u_q;
-  assign step_r1v    = streaming ? param_r1v_i : r1v_q;
-  assign step_r2u    = streaming ? param_r2u_i : r2u_q;
-  assign step_r2v    = streaming ? param_r2v_i : r2v_q;
   assign step_u      = streaming ? param_u_i : u_q;
   assign step_v      = streaming ? param_v_i : v_q;
   assign step_lambda = streaming ? param_lambda_i : lambda_q;
   assign step_shade  = streaming ? param_shade_i : shade_q;
+  assign step_r1u    = streaming ? param_r1u_i : r1u_q;
+  assign step_r1v    = streaming ? param_r1v_i : r1v_q;
+  assign step_r2u    = streaming ? param_r2u_i : r2u_q;
+  assign step_r2v    = streaming ? param_r2v_i : r2v_q;
   logic               step_clut_ready;
   tmu_pkg::rgba8888_t step_rgba;
 
@@ -437,7 +438,7 @@ module tmu_texram_chip (
         if (step_req_ready) begin
           steps_d = steps_q + 1'b1;
           state_d = StWait;
-          // A pixel's only step, a plain texture: the next pixels may follow it into the unit.
+          // The pixel's only step, a streamable one: the next pixels may follow it into the unit.
           if (step_q == '0 && streamable) begin
             in_flight_d = InFlightW'(1);
             state_d     = StStream;

@@ -5,7 +5,6 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -157,7 +156,7 @@ RunResult run_in_child(const std::function<RunResult()>& fn) {
   std::string truncated;
   try {
     r = receive(fds[0]);
-  } catch (const std::runtime_error& e) {
+  } catch (const std::exception& e) {  // a truncated result (or a size no vector can hold)
     truncated = e.what();
   }
   ::close(fds[0]);
