@@ -294,7 +294,7 @@ TEST(VideoRenderTest, AVideoWithADetailMap) {
   const std::string detail =
       R"(, "detail": {"map": {"pattern": "noise", "size": [32, 32], "seed": 3}, "combine": "modulate"})";
   std::vector<std::vector<ImageRgb8>> frames;
-  for (const std::string extra : {std::string(), detail}) {
+  for (const std::string& extra : {std::string(), detail}) {
     SCOPED_TRACE(extra.empty() ? "without" : "with the detail map");
     const fs::path scene = write_scene(dir, generated(false, 1, 2, 4), extra);
     const fs::path out = dir / (extra.empty() ? "plain" : "detail");

@@ -93,6 +93,36 @@ glm::dvec4 ideal_texture(const host::Material& mat, const MaterialTexture& tex,
   return {s[0], s[1], s[2], s[3]};
 }
 
+namespace {
+
+// A material's texture from its source (an image or a .ccc file) as its unit holds it: the
+// low-cost unit's CCC blocks, or the TEXRAM's banks (and at ideal the exact texels). Throws
+// InputError or std::invalid_argument; the caller names the scene's field.
+void load_texture(const host::Material& mat, Level level, MaterialTexture& mt) {
+  const bool ccc_file = mat.texture.kind == host::TextureSource::Kind::kCcc;
+  if (mat.unit == host::Material::Unit::kLowcost) {
+    ccc::Texture tex =
+        ccc_file ? ccc::read_ccc(mat.texture.path) : ccc::encode(source_image(mat.texture));
+    mt.size = {static_cast<int>(tex.width), static_cast<int>(tex.height)};
+    mt.ccc = std::make_shared<const ccc::Texture>(std::move(tex));
+  } else {
+    texram::TexramTexture tex =
+        ccc_file ? texram::import_ccc(ccc::read_ccc(mat.texture.path))
+                 : texram::import_image(source_image(mat.texture), mat.sampler.kind,
+                                        mat.sampler.single_channel);
+    // The real-time mipmap generator runs when the first fragment of the material needs
+    // the texture (shade()): a material with none in the frame or band builds no unit.
+    mt.mipgen_pending = mat.mipmaps == host::Material::Mipmaps::kMipgen && level != Level::kIdeal;
+    mt.size = {static_cast<int>(tex.geometry.texel_width(0)),
+               static_cast<int>(tex.geometry.texel_height(0))};
+    if (level == Level::kIdeal)
+      mt.ideal = std::make_shared<const texram::IdealTexture>(texram::ideal_texture(tex.source));
+    mt.texram = std::make_shared<const texram::TexramTexture>(std::move(tex));
+  }
+}
+
+}  // namespace
+
 uint32_t rgba_of(const glm::dvec4& c) {
   const auto ch = [](double v) {
     return static_cast<uint32_t>(std::lround(std::clamp(v, 0.0, 255.0)));
@@ -134,28 +164,7 @@ Pipeline::Pipeline(const host::Scene& scene, Level level, int chips, const Video
            "(render/video_mipgen, docs/video.md)"});
     } else {
       try {
-        const bool ccc_file = mat.texture.kind == host::TextureSource::Kind::kCcc;
-        if (mat.unit == host::Material::Unit::kLowcost) {
-          ccc::Texture tex =
-              ccc_file ? ccc::read_ccc(mat.texture.path) : ccc::encode(source_image(mat.texture));
-          mt.size = {static_cast<int>(tex.width), static_cast<int>(tex.height)};
-          mt.ccc = std::make_shared<const ccc::Texture>(std::move(tex));
-        } else {
-          texram::TexramTexture tex =
-              ccc_file ? texram::import_ccc(ccc::read_ccc(mat.texture.path))
-                       : texram::import_image(source_image(mat.texture), mat.sampler.kind,
-                                              mat.sampler.single_channel);
-          // The real-time mipmap generator runs when the first fragment of the material needs
-          // the texture (shade()): a material with none in the frame or band builds no unit.
-          mt.mipgen_pending =
-              mat.mipmaps == host::Material::Mipmaps::kMipgen && level != Level::kIdeal;
-          mt.size = {static_cast<int>(tex.geometry.texel_width(0)),
-                     static_cast<int>(tex.geometry.texel_height(0))};
-          if (level == Level::kIdeal)
-            mt.ideal =
-                std::make_shared<const texram::IdealTexture>(texram::ideal_texture(tex.source));
-          mt.texram = std::make_shared<const texram::TexramTexture>(std::move(tex));
-        }
+        load_texture(mat, level, mt);
       } catch (const InputError& e) {
         throw InputError(scene.path, field, e.what());
       } catch (const std::invalid_argument& e) {

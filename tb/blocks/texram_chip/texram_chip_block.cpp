@@ -992,6 +992,7 @@ void TexramChipBlock::cover(const std::vector<Txn>& items, size_t index, const T
     cover_next_ = 0;
     cover_file_ = {};
     cover_pending_ = 0;
+    cover_lead_ = 0;
   }
   for (; cover_next_ < index; ++cover_next_) {
     const Txn& t = items[cover_next_];
@@ -1058,21 +1059,19 @@ void TexramChipBlock::cover(const std::vector<Txn>& items, size_t index, const T
     ++cov[kExtreme];
   }
   if (index + 1 < items.size() && items[index + 1].f[0] != D::op_param) ++cov[kWriteBusy];
-  // The item before this pixel is the last parameter of the pixel before it (no write between).
-  if (first > 0 && items[first - 1].f[0] == D::op_param) {
-    const int before = chip_parameter(items[first - 1]).lead;
-    const Walk b = walk(cover_file_, before);
-    if (b.drfs.size() == 1 && streams(cover_file_, before)) {
-      if (before != lead.lead) {
-        ++cov[kStreamLeft];
-      } else {
-        ++cov[kStreamed];
-        const Drf& d = cover_file_[static_cast<size_t>(before - 1)];
-        if (d.footprint) ++cov[kStreamedFootprint];
-        if (d.op == DrfOp::kEmit) ++cov[kStreamedEmit];
-      }
+  // The pixel before this one (its last parameter the item right before: no write between) was
+  // led by cover_lead_; the lead field of a later parameter of a pixel means nothing.
+  if (first > 0 && items[first - 1].f[0] == D::op_param && streams(cover_file_, cover_lead_)) {
+    if (cover_lead_ != lead.lead) {
+      ++cov[kStreamLeft];
+    } else {
+      ++cov[kStreamed];
+      const Drf& d = cover_file_[static_cast<size_t>(cover_lead_ - 1)];
+      if (d.footprint) ++cov[kStreamedFootprint];
+      if (d.op == DrfOp::kEmit) ++cov[kStreamedEmit];
     }
   }
+  cover_lead_ = lead.lead;
 }
 
 }  // namespace tmu::tb

@@ -117,6 +117,7 @@ class TexramChipBlock : public DescribedBlockOf<TexramChipBlock> {
   mutable size_t cover_next_ = 0;
   mutable texram::chip::DrfFile cover_file_{};
   mutable int cover_pending_ = 0;
+  mutable int cover_lead_ = 0;  // the leading DRF of the pixel covered last
 };
 
 // ---- Items, for tests and tools ------------------------------------------------------------
