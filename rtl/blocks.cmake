@@ -363,9 +363,12 @@ tmu_mutant(mipgen above FILE texram/tmu_mipgen.sv
 tmu_mutant(mipgen fifo FILE texram/tmu_mipgen.sv
   FROM ".addr_i  (x_q[FifoAddrW:1])," TO ".addr_i  (x_q[FifoAddrW-1:0]),"
   WHY "the line FIFOs are addressed by column, not column pair: right until a line fills its FIFO (a 1024-texel line at stage 0), then its second half overwrites its first")
+tmu_mutant(mipgen restart FILE texram/tmu_mipgen.sv
+  FROM "assign pos_y = in_start_i ? '0 : src_y_q;" TO "assign pos_y = src_y_q;"
+  WHY "a frame's first texel after a frame cut short keeps the old line: the new frame's texels land on the old frame's lines")
 tmu_mutant(mipgen unreset FILE texram/tmu_mipgen.sv EXPECT x-leak
-  FROM "      src_x_q <= '0;\n      src_y_q <= '0;\n" TO ""
-  WHY "the source position starts where its flops happen to be (the first frame's texels are written elsewhere)")
+  FROM "      busy_q  <= 1'b0;\n" TO ""
+  WHY "the generator starts busy or idle as its flop happens to be (writes out of nothing, or the first texel refused)")
 
 # TEXRAM video port receiver (000 §11; golden/texram/video/video_port.hpp, docs/video.md).
 tmu_block(video_port)
@@ -400,9 +403,34 @@ tmu_mutant(video_rows fault_free FILE texram/tmu_video_rows.sv
 tmu_mutant(video_rows sampler_pages FILE texram/tmu_video_rows.sv
   FROM "open_v_q <= '0;\n        end" TO "open_v_q <= open_v_q;\n        end"
   WHY "a sampler access keeps every bank's page open (a write after the sampler is taken as a page hit)")
+tmu_mutant(video_rows read_overlay FILE texram/tmu_video_rows.sv
+  FROM "(rd_go ? rd_mask : '0)" TO "'0"
+  WHY "a read takes no cell from the row buffers: the line above read back for interlaced field 2 misses the cells not yet written to the memory")
+tmu_mutant(video_rows drained FILE texram/tmu_video_rows.sv
+  FROM "!(freeing && IdW'(i) == writing_now)" TO "1'b1"
+  WHY "the held frame's last write is still counted in the cycle it ends: its swap comes a cycle late")
 tmu_mutant(video_rows unreset FILE texram/tmu_video_rows.sv EXPECT x-leak
   FROM "      max_busy_q  <= '0;\n" TO ""
   WHY "the busy-buffer high-water mark starts where its flops happen to be")
+
+# TEXRAM video unit (000 §11-12; golden/texram/video/video_unit.hpp at 8-cell rows and 8 buffers a
+# bank, docs/video.md): the port, a mipmap generator per plane and the row buffers into the memory.
+tmu_block(video_unit)
+tmu_mutant(video_unit early_swap FILE texram/tmu_video_unit.sv
+  FROM "assign swap_now    = pending_q && o_drained;" TO "assign swap_now    = pending_q;"
+  WHY "the front buffer swapped at the frame's end, before its last rows reach the memory: the sampler reads a torn frame")
+tmu_mutant(video_unit read_memory_only FILE texram/tmu_video_unit.sv
+  FROM "assign cap_value   = o_mask[cap_q] ? o_data[8*cap_q +: 8] : resp_q[8*cap_q +: 8];" TO "assign cap_value   = resp_q[8*cap_q +: 8];"
+  WHY "the line above read from the memory only: cells still in a row buffer come back stale")
+tmu_mutant(video_unit one_line FILE texram/tmu_video_unit.sv
+  FROM "assign above_slot = r_y[1] ^ !r_y[0];" TO "assign above_slot = 1'b0;"
+  WHY "one line of shift registers: the reads of the next line above overwrite the line in use")
+tmu_mutant(video_unit front_buffer FILE texram/tmu_video_unit.sv
+  FROM "cur_d = !newest_q;" TO "cur_d = newest_q;"
+  WHY "a frame written into the buffer the sampler reads (no double buffering)")
+tmu_mutant(video_unit unreset FILE texram/tmu_video_unit.sv EXPECT x-leak
+  FROM "      late_q     <= '0;\n" TO ""
+  WHY "the late-read counter starts where its flops happen to be")
 
 # CCC decoder (000 §3, Fig. 5).
 tmu_block(ccc_decoder)

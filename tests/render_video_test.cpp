@@ -15,8 +15,8 @@
 #include "common/image.hpp"
 #include "render/chip_stage.hpp"
 #include "render/video_feed.hpp"
-#include "render/video_mipgen.hpp"
 #include "render/video_render.hpp"
+#include "render/video_unit_feed.hpp"
 #include "scene/scene.hpp"
 #include "texram/mipgen_stream.hpp"
 #include "texram/mipmap.hpp"
@@ -249,13 +249,20 @@ TEST(VideoRenderTest, RtlEqualsGoldenOnTheChipsEveryFrame) {
         EXPECT_GT(f.render.check->compared, 100u);
         EXPECT_GT(f.feeds[0].sampler_lost, 0u);
         EXPECT_EQ(f.feeds[0].sampler_lost, f.feeds[0].write_cycles + f.feeds[0].read_cycles);
-        // The mipgen block at rtl wrote the frame's every cell as the golden path did.
-        EXPECT_TRUE(f.mipgen[0].match());
-        EXPECT_GT(f.mipgen[0].writes, 64u * 64u * static_cast<uint64_t>(planes));
+        // The video unit at rtl left both buffers as the golden path did; at 8-cell rows a frame
+        // takes at least a write for every 8 of its cells (4/3 cells a texel a plane).
+        EXPECT_EQ(f.unit[0].differing, 0u);
+        EXPECT_GE(f.unit[0].writes, 64u * 64u * 4u / 3u * static_cast<uint64_t>(planes) / 8u);
+        if (interlaced) {
+          EXPECT_GT(f.unit[0].reads, 0u);
+        }
       }
       EXPECT_TRUE(fs::exists(dir / "out" / "video.frame-0001.png"));
       EXPECT_TRUE(fs::exists(dir / "out" / "video.report.json"));
       EXPECT_NE(log.str().find("host work"), std::string::npos);
+      ASSERT_EQ(rep.units.size(), 1u);
+      EXPECT_EQ(rep.units[0].against, "golden");
+      EXPECT_TRUE(rep.units[0].match);  // the unit's rtl run = its golden run, bit for bit
     }
   }
   fs::remove_all(dir);
@@ -323,9 +330,9 @@ TEST(VideoRenderTest, AVideoWithADetailMap) {
   fs::remove_all(dir);
 }
 
-// The mipgen block's comparison can fail: one cell of the front buffer changed is one write that
-// differs.
-TEST(VideoRenderTest, TheMipgenBlockCheckCatchesABrokenBuffer) {
+// The unit's comparison with the golden path can fail: one cell of a buffer changed is one cell
+// that differs, and so is the other buffer in front.
+TEST(VideoRenderTest, TheUnitAgainstTheGoldenPathCatchesABrokenBuffer) {
   host::Video v;
   v.pattern = "rings";
   v.planes = 4;
@@ -333,16 +340,20 @@ TEST(VideoRenderTest, TheMipgenBlockCheckCatchesABrokenBuffer) {
   v.height = 16;
   VideoFeed feed(v, 0, 1);
   feed.feed(0);
-  auto buffers = std::make_shared<VideoBuffers>(*feed.buffers());
-  EXPECT_TRUE(check_video_mipgen(v, 0, *buffers, Level::kRtl).match());
-  auto broken = std::make_shared<texram::TexramTexture>(
-      *buffers->buffers[static_cast<size_t>(buffers->front)]);
-  const texram::BankCell c = broken->geometry.cell(1, 3, 2, 2);
-  broken->banks[c.bank][c.address] ^= 1;
-  buffers->buffers[static_cast<size_t>(buffers->front)] = broken;
-  const VideoMipgenCheck m = check_video_mipgen(v, 0, *buffers, Level::kRtl);
-  EXPECT_EQ(m.differing, 1u);
-  EXPECT_FALSE(m.match());
+  const VideoUnitFeed unit = feed_video_unit(v, 0, 0, Level::kRtl, std::nullopt);
+  ASSERT_EQ(unit.frames.size(), 1u);
+  const std::shared_ptr<const VideoBuffers> buffers = feed.buffers();
+  const VideoBuffers& golden = *buffers;
+  EXPECT_EQ(differing_cells(*unit.frames[0].buffers, golden), 0u);
+  auto broken = std::make_shared<VideoBuffers>(golden);
+  auto texture =
+      std::make_shared<texram::TexramTexture>(*broken->buffers[static_cast<size_t>(broken->front)]);
+  const texram::BankCell c = texture->geometry.cell(1, 3, 2, 2);
+  texture->banks[c.bank][c.address] ^= 1;
+  broken->buffers[static_cast<size_t>(broken->front)] = texture;
+  EXPECT_EQ(differing_cells(*unit.frames[0].buffers, *broken), 1u);
+  broken->front = 1 - broken->front;
+  EXPECT_EQ(differing_cells(*unit.frames[0].buffers, *broken), 2u);
 }
 
 TEST(VideoRenderTest, AnInjectedFaultIsCaughtOnEveryFrame) {

@@ -32,10 +32,12 @@ if render "$scene" --engine golden --chips 1 --frames 2 --out "$work/alone" >/de
 else
   fail "frame 2 alone differs"
 fi
-grep -q "mipgen: the block at rtl over every rendered frame: [0-9]* writes, MATCH" <<<"$out"
-verdict $? "the mipgen block at rtl writes every frame's front buffer"
-grep -q "host work:" <<<"$out" && grep -q "video stream of screen" <<<"$out"
-verdict $? "the golden video stream is named as host work"
+grep -q "video unit = golden path on every frame: [0-9]* row writes, MATCH" <<<"$out"
+verdict $? "the video unit at rtl writes every frame as the golden path does"
+grep -q "video unit of screen at rtl: .*check: MATCH against golden" <<<"$out"
+verdict $? "the video unit's rtl run = its golden run"
+grep -q "host work:" <<<"$out" && grep -q "video timing of screen" <<<"$out"
+verdict $? "the golden video timing is named as host work"
 
 for variant in 'interlaced, one plane|"interlaced": true, "planes": 1' \
   'interlaced, four planes|"interlaced": true, "planes": 4' \

@@ -80,6 +80,8 @@ class MipgenSc : public sc_core::sc_module {
         if (!stream || stream->frame_start()) {
           const texram::MipgenConfig cfg = format();
           if (!stream || !(stream->config() == cfg)) stream.emplace(cfg);
+        } else if (in_start_i.read()) {
+          stream.emplace(format());  // a frame cut short: the position restarts
         }
         stream->step(
             {static_cast<uint8_t>(in_texel_i.read()), static_cast<uint8_t>(in_above_i.read())},

@@ -32,7 +32,7 @@ class VideoRowsSc : public sc_core::sc_module {
   static constexpr uint32_t kCells = 8;
 
   struct Out {
-    bool granted = false, write = false, read = false, fault = false;
+    bool granted = false, write = false, read = false, fault = false, drained = false;
     unsigned bank = 0;
     uint32_t addr = 0;
     uint32_t mask = 0;
@@ -51,6 +51,7 @@ class VideoRowsSc : public sc_core::sc_module {
     out_mask_o.write(o ? o->mask : 0u);
     out_data_o.write(o ? o->data : 0u);
     out_wait_o.write(o ? o->wait : 0u);
+    out_drained_o.write(o && o->drained);
   }
 
   // The ports keep the counts' low 32 bits: the RTL's registers wrap.
@@ -62,10 +63,12 @@ class VideoRowsSc : public sc_core::sc_module {
     stat_max_busy_bank_o.write(s.max_busy_bank);
   }
 
-  static Out output(bool granted, const texram::video::RowBuffers::Access& a) {
+  static Out output(bool granted, const texram::video::RowBuffers& rows) {
     using Kind = texram::video::RowBuffers::Access::Kind;
+    const texram::video::RowBuffers::Access& a = rows.last_access();
     Out o;
     o.granted = granted;
+    o.drained = rows.held_frame_written();
     if (a.kind == Kind::kNone) return o;
     o.write = a.kind == Kind::kWrite;
     o.read = a.kind == Kind::kRead;
@@ -122,7 +125,7 @@ class VideoRowsSc : public sc_core::sc_module {
       }
       if (cycle_valid_i.read() && cycle_ready_o.read()) {
         const bool granted = rows.cycle(cycle_sampler_i.read() != 0);
-        out.push(output(granted, rows.last_access()));
+        out.push(output(granted, rows));
       }
     }
   }

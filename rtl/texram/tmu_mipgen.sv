@@ -9,6 +9,8 @@
 /// level-0 texel above it (the chip reads that line back from its banks into the shift
 /// registers 826); elsewhere in_above_i is ignored. A one-line frame is never interlaced.
 /// After a frame's last texel the next item starts a new frame, of the format then on cfg_*.
+/// in_start_i marks a frame's first texel: the position restarts at (0, 0), so a frame cut
+/// short (the video unit drops it) leaves nothing behind; elsewhere in the stream it is 0.
 ///
 /// Output, per input item: its level-0 write(s), then each higher-level texel the item
 /// completes, ascending level. A texel of a level less than 2 texels wide (high) is written
@@ -66,6 +68,7 @@ module tmu_mipgen #(
   output logic                 in_ready_o,
   input  tmu_pkg::channel_t    in_texel_i,
   input  tmu_pkg::channel_t    in_above_i,
+  input  logic                 in_start_i,
 
   /// Cell writes: texel (wr_x_o, wr_y_o) (stored coordinates) of level wr_level_o, and its
   /// bank and address (tmu_bank_address).
@@ -105,6 +108,11 @@ module tmu_mipgen #(
   logic                interlaced;     // fields in effect: interlaced and more than one line
   tmu_pkg::mip_coord_t src_x_q, src_x_d, src_y_q, src_y_d;
   logic [CoordW:0]     src_y_step;
+
+  // The item's place: a frame's first texel restarts at (0, 0) (after a frame cut short).
+  tmu_pkg::mip_coord_t pos_x, pos_y;
+  assign pos_x = in_start_i ? '0 : src_x_q;
+  assign pos_y = in_start_i ? '0 : src_y_q;
 
   assign width      = (CoordW + 1)'(1) << cfg_log2_w_i;
   assign height     = (CoordW + 1)'(1) << cfg_log2_h_i;
@@ -189,7 +197,7 @@ module tmu_mipgen #(
   // The rounding rule: the level's fraction bits k, the next level's k_next; the texel is the
   // sum plus half of 2^(k+2) with k + 2 bits dropped, the carried value the sum with
   // k + 2 - k_next (0..2) bits dropped, rounded half up the same way.
-  logic [KW-1:0]   k, k_next, drop;
+  logic [KW-1:0]   k, k_next, drop_bits;
   logic [SumW-1:0] texel_sum, carry_sum;
 
   // K(l) = min(2 l, CarryBits) of every level, a table fixed at elaboration.
@@ -200,12 +208,13 @@ module tmu_mipgen #(
   end
   tmu_pkg::mip_level_t lvl_next;
   assign lvl_next = lvl_q + LevelW'(1);  // lvl_q <= MaxLog2 < 15: no wrap
-  assign k        = frac_of[lvl_q*KW +: KW];
-  assign k_next   = frac_of[lvl_next*KW +: KW];
-  assign drop   = k + KW'(2) - k_next;
+  assign k         = frac_of[lvl_q*KW +: KW];
+  assign k_next    = frac_of[lvl_next*KW +: KW];
+  assign drop_bits = k + KW'(2) - k_next;
   // At most 255 2^(k+2) + 2^(k+1) < 2^SumW: no carry out.
   assign texel_sum = (sum + (SumW'(2) << k)) >> (k + KW'(2));
-  assign carry_sum = (drop == '0) ? sum : (sum + (SumW'(1) << (drop - KW'(1)))) >> drop;
+  assign carry_sum = (drop_bits == '0) ? sum
+                   : (sum + (SumW'(1) << (drop_bits - KW'(1)))) >> drop_bits;
   // The texel fits 8 bits and the carried value CarW bits (a level Stages top's does not, and
   // is never read).
   logic unused_sum_bits;
@@ -252,24 +261,25 @@ module tmu_mipgen #(
     if (in_fire) begin
       busy_d  = 1'b1;
       lvl_d   = '0;
-      x_d     = src_x_q;
-      y_d     = src_y_q;
+      x_d     = pos_x;
+      y_d     = pos_y;
       val_d   = in_texel_i;
       car_d   = CarW'(in_texel_i);
       above_d = in_above_i;
       rep_d   = '0;
       // Source order: along the line; then the next line, or of the same field; a field's
       // end goes to field 2 (line 1), a frame's end to line 0.
-      if ((CoordW + 1)'(src_x_q) + (CoordW + 1)'(1) == width) begin
+      if ((CoordW + 1)'(pos_x) + (CoordW + 1)'(1) == width) begin
         src_x_d    = '0;
-        src_y_step = (CoordW + 1)'(src_y_q) + (interlaced ? (CoordW + 1)'(2) : (CoordW + 1)'(1));
+        src_y_step = (CoordW + 1)'(pos_y) + (interlaced ? (CoordW + 1)'(2) : (CoordW + 1)'(1));
         if (src_y_step >= height) begin
-          src_y_d = (interlaced && !src_y_q[0]) ? CoordW'(1) : '0;
+          src_y_d = (interlaced && !pos_y[0]) ? CoordW'(1) : '0;
         end else begin
           src_y_d = src_y_step[CoordW-1:0];
         end
       end else begin
-        src_x_d = src_x_q + CoordW'(1);
+        src_x_d = pos_x + CoordW'(1);
+        src_y_d = pos_y;
       end
     end
   end

@@ -14,7 +14,9 @@
 ///   hold   the swap barrier: ready buffers of frames above `tag` wait (0xFFFF: none).
 ///   read   a row read for the line above (bank, the row's address), queued (ReadDepth).
 ///   cycle  one memory cycle; `sampler`: the sampler wants it. Its output: whether the sampler
-///          got it, and the access started in it. In order: (1) the oldest read, if the
+///          got it, and the access started in it (a read's mask and data: the cells of the row a
+///          buffer still holds, the newest buffer's, which the read takes instead of the
+///          memory's), and whether no buffer of the held frame is left after it (drained). In order: (1) the oldest read, if the
 ///          sampler does not want the cycle or the read has waited cfg_read_wait_i; else (2) the
 ///          oldest ready buffer not held, if the sampler does not want the cycle or it has
 ///          waited cfg_max_wait_i (L); else (3) the sampler, if it wants it. An access takes
@@ -82,6 +84,8 @@ module tmu_video_rows #(
   output logic [Cells-1:0]      out_mask_o,
   output logic [8*Cells-1:0]    out_data_o,
   output tmu_pkg::video_tag_t   out_wait_o,
+  /// After the cycle no buffer holds a cell of the frame the hold item names (its swap may go).
+  output logic                  out_drained_o,
 
   /// Counters (32 bits, wrapping; the most-at-once ones are high-water marks).
   output tmu_pkg::stat_count_t  stat_cells_in_o,
@@ -256,6 +260,44 @@ module tmu_video_rows #(
   assign freeing  = busy_now != '0 && busy_next == '0 && !reading_now;
   assign granted  = busy_now == '0 && sampler;
 
+  // A read's data take the cells a row buffer still holds: per cell, the newest buffer of the
+  // bank holding that row's cell (highest tag, then the last), as golden's read_back.
+  logic [Cells-1:0]   rd_mask;
+  logic [8*Cells-1:0] rd_data;
+  logic [TagW-1:0]    rd_best [Cells];
+  logic [IdW-1:0]     rd_id;
+
+  always_comb begin
+    rd_mask = '0;
+    rd_data = '0;
+    rd_id   = '0;
+    for (int c = 0; c < Cells; c++) begin
+      rd_best[c] = '0;
+      for (int j = 0; j < Buffers; j++) begin
+        rd_id = (IdW'(rd_bank_q[0]) << SelW) + IdW'(j);
+        if (st_q[rd_id] != Free && seg_q[rd_id] == rd_seg_q[0] && valid_q[rd_id][c] &&
+            (!rd_mask[c] || tag_q[rd_id] >= rd_best[c])) begin
+          rd_mask[c]        = 1'b1;
+          rd_best[c]        = tag_q[rd_id];
+          rd_data[8*c +: 8] = data_q[rd_id][8*c +: 8];
+        end
+      end
+    end
+  end
+
+  // Drained: no buffer of the held frame is busy after this cycle (a write that ends in it has
+  // freed its buffer).
+  logic drained;
+
+  always_comb begin
+    drained = 1'b1;
+    for (int i = 0; i < NB; i++) begin
+      if (st_q[i] != Free && tag_q[i] == hold_q && !(freeing && IdW'(i) == writing_now)) begin
+        drained = 1'b0;
+      end
+    end
+  end
+
   // ---- Next state of the queues -------------------------------------------------------------
 
   logic [IdW-1:0]  rq_id_d  [NB];
@@ -401,10 +443,12 @@ module tmu_video_rows #(
       out_fault_o   <= start && fault;
       out_bank_o    <= start ? acc_bank : '0;
       out_addr_o    <= start ? {acc_seg, {CellBits{1'b0}}} : '0;
-      out_mask_o    <= wr_go ? valid_q[wr_id] : '0;
+      out_mask_o    <= wr_go ? valid_q[wr_id] : (rd_go ? rd_mask : '0);
       for (int c = 0; c < Cells; c++) begin
-        out_data_o[8*c +: 8] <= (wr_go && valid_q[wr_id][c]) ? data_q[wr_id][8*c +: 8] : 8'h00;
+        out_data_o[8*c +: 8] <= (wr_go && valid_q[wr_id][c]) ? data_q[wr_id][8*c +: 8] :
+                                (rd_go ? rd_data[8*c +: 8] : 8'h00);
       end
+      out_drained_o <= drained;
       out_wait_o    <= rd_go ? rd_age_q[0] : (wr_go ? rq_age_q[wr_k[IdW-1:0]] : '0);
     end
   end

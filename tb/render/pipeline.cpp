@@ -155,13 +155,11 @@ Pipeline::Pipeline(const host::Scene& scene, Level level, int chips, const Video
       mt.texram = mt.video->buffers[static_cast<size_t>(mt.video->front)];
       mt.size = {mat.video->width, mat.video->height};
       note_host_work(
-          {"video stream of " + mat.name +
-               " (000 §11-12: video port, mipmap generator, page-row buffers and arbiter, the "
-               "swap)",
-           "the golden VideoMap on the host writes the chip's memory: the video unit joining "
-           "video_port, mipgen and video_rows to the chip is not in hardware yet; the mipgen "
-           "block runs at the engine beside it over each frame, compared cell by cell "
-           "(render/video_mipgen, docs/video.md)"});
+          {"video timing of " + mat.name + " at the scene's rate (000 §11-12)",
+           "the chip's memory is what the video unit at the engine wrote (render/video_unit_feed, "
+           "8-cell rows); the cycles at the video's rate and the chip's "
+           "512-cell rows, in the video report, are the golden VideoMap's on the host, whose "
+           "buffers are compared with the unit's cell for cell (docs/video.md)"});
     } else {
       try {
         load_texture(mat, level, mt);

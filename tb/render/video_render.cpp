@@ -12,6 +12,7 @@
 #include "render/chip_stage.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/pipeline.hpp"
+#include "render/video_unit_feed.hpp"
 
 namespace tmu::render {
 namespace {
@@ -86,20 +87,32 @@ int render_video(const std::string& scene_path, const RenderOptions& o, FrameRan
   rep.out_dir = o.out_dir;
   // The chips' placement (the same every frame: it depends on sizes only) gives each video's base
   // and DRF, which the VideoMap's swaps then write.
+  int code = 0;
   std::vector<VideoFeed> feeds;
+  std::vector<VideoUnitFeed> units;  // per video: the video unit at the engine over every frame
   {
     const Pipeline placed(scene, Level::kGolden, o.chips);
     for (size_t m : videos) {
       const auto [base, drf] = video_placement(scene, *placed.chips(), m);
       feeds.emplace_back(*scene.materials[m].video, base, drf);
+      try {
+        units.push_back(
+            feed_video_unit(*scene.materials[m].video, base, range.last, o.level, o.check));
+      } catch (const std::runtime_error& e) {  // a format the unit cannot take
+        throw InputError(scene_path, "materials." + scene.materials[m].name + ".video", e.what());
+      }
       rep.videos.push_back(describe(scene.materials[m]));
       rep.bases.push_back(base);
       rep.drfs.push_back(drf);
+      const UnitRun& u = units.back().run;
+      rep.units.push_back({u.items.size(), u.result.outputs.size(), units.back().cycles_per_item,
+                           units.back().check_level,
+                           units.back().check ? units.back().check->match() : true});
+      if (!rep.units.back().match) code = 1;
     }
   }
   std::filesystem::create_directories(o.out_dir);
 
-  int code = 0;
   for (int f = 0; f <= range.last; ++f) {
     VideoFrameReport fr;
     fr.frame = f;
@@ -111,16 +124,16 @@ int render_video(const std::string& scene_path, const RenderOptions& o, FrameRan
         throw InputError(scene_path, "materials." + scene.materials[videos[i]].name + ".video.fps",
                          e.what());
       }
-      (*state)[videos[i]] = feeds[i].buffers();
-      fr.shown.push_back((*state)[videos[i]]->shown);
-      fr.front.push_back((*state)[videos[i]]->front);
+      // The chip samples what the video unit wrote; the golden path must have written the same.
+      const VideoUnitFrame& u = units[i].frames[static_cast<size_t>(f)];
+      (*state)[videos[i]] = u.buffers;
+      fr.shown.push_back(u.buffers->shown);
+      fr.front.push_back(u.buffers->front);
+      fr.unit.push_back(
+          {u.cycles, u.writes, u.reads, differing_cells(*u.buffers, *feeds[i].buffers())});
+      if (fr.unit.back().differing != 0) code = 1;
     }
     if (f < range.first) continue;
-    for (size_t i = 0; i < videos.size(); ++i) {
-      fr.mipgen.push_back(
-          check_video_mipgen(*scene.materials[videos[i]].video, f, *(*state)[videos[i]], o.level));
-      if (!fr.mipgen.back().match()) code = 1;
-    }
     // The chip's DRF reads the front buffer at the base the VideoMap's swap wrote.
     {
       const Pipeline frame(scene, Level::kGolden, o.chips, state.get());

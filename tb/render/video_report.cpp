@@ -25,11 +25,10 @@ std::string verdict(const RenderReport& r) {
   return r.check->match() ? "MATCH" : fmt::format("MISMATCH ({})", r.check->differing);
 }
 
-// "8190 writes =", or "8190 writes, 3 !=" (the mipgen block's writes against the front buffer).
-std::string mipgen_cell(const VideoMipgenCheck& m) {
-  if (m.writes != m.golden_writes) return fmt::format("{} of {} writes", m.writes, m.golden_writes);
-  return m.differing ? fmt::format("{} writes, {} !=", m.writes, m.differing)
-                     : fmt::format("{} writes =", m.writes);
+// "2731 writes =", or "2731 writes, 3 !=" (the unit's buffers against the golden path's cells).
+std::string unit_cell(const VideoFrameReport::Unit& u) {
+  return u.differing ? fmt::format("{} writes, {} !=", u.writes, u.differing)
+                     : fmt::format("{} writes =", u.writes);
 }
 
 }  // namespace
@@ -37,9 +36,12 @@ std::string mipgen_cell(const VideoMipgenCheck& m) {
 bool VideoRenderReport::match() const {
   for (const VideoFrameReport& f : frames) {
     if (f.render.check && !f.render.check->match()) return false;
-    for (const VideoMipgenCheck& m : f.mipgen) {
-      if (!m.match()) return false;
+    for (const VideoFrameReport::Unit& u : f.unit) {
+      if (u.differing != 0) return false;
     }
+  }
+  for (const UnitRunReport& u : units) {
+    if (!u.match) return false;
   }
   return true;
 }
@@ -64,7 +66,7 @@ std::string VideoRenderReport::text() const {
       "  {:>5} {:<8} {:>5} {:>6} {:>10} {:>10} {:>10} {:>9} {:>6} {:>7} {:>6} {:>5} {:>17} {:>11}  "
       "{}\n";
   s += fmt::format(kRow, "frame", "video", "shown", "buffer", "first item", "last item", "swap",
-                   "fed", "lost", "lost %", "writes", "reads", "mipgen = front", "chip cycles",
+                   "fed", "lost", "lost %", "writes", "reads", "unit = golden", "chip cycles",
                    "check");
   for (const VideoFrameReport& f : frames) {
     for (size_t i = 0; i < f.feeds.size(); ++i) {
@@ -73,16 +75,28 @@ std::string VideoRenderReport::text() const {
                        f.front[i], v.begin_cycle, v.end_cycle, v.swap_cycle, v.cycles,
                        v.sampler_lost,
                        fmt::format("{:.3f}", percent(v.sampler_lost, v.sampler_wanted)),
-                       v.write_accesses, v.read_accesses, mipgen_cell(f.mipgen[i]),
+                       v.write_accesses, v.read_accesses, unit_cell(f.unit[i]),
                        i == 0 ? chip_cycles(f.render) : 0, i == 0 ? verdict(f.render) : "");
     }
   }
   s += fmt::format(
-      "  (fed: the cycles feeding the frame took, its items at the video's rate and then until "
-      "its swap; lost: the\n  sampler's cycles the writes and reads took, faults included; "
-      "writes, reads: row-buffer accesses; mipgen =\n  front: the mipgen block at {} over the "
-      "frame, its writes equal to the front buffer's cells)\n",
+      "  (first item .. reads: the golden VideoMap at the chip's 512-cell rows, the frame's items "
+      "at the video's rate;\n  fed: the cycles the frame took until its swap; lost: the "
+      "sampler's cycles the writes and reads took,\n  faults included; writes, reads: row-buffer "
+      "accesses; unit = golden: the video unit at {} (8-cell rows,\n  its rate below), its "
+      "row writes, and its two buffers at the swap equal to the golden path's, cell for cell)\n",
       engine);
+  for (size_t i = 0; i < units.size(); ++i) {
+    const UnitRunReport& u = units[i];
+    s += fmt::format("  video unit of {} at {}: {} items, {} memory cycles (a texel in {}){}\n",
+                     videos[i].substr(0, videos[i].find(':')), engine, u.items, u.cycles,
+                     u.cycles_per_item,
+                     u.against.empty() ? ""
+                     : u.match ? fmt::format("; check: MATCH against {} (every output, request "
+                                             "and counter)",
+                                             u.against)
+                               : fmt::format("; check: MISMATCH against {}", u.against));
+  }
   if (!frames.empty() && !frames.front().render.host_work.empty()) {
     s += "  host work:\n";
     for (const HostWork& w : frames.front().render.host_work)
@@ -99,17 +113,16 @@ std::string VideoRenderReport::text() const {
       "  wrote {}/video.frame-NNNN.png (frames {}..{}), video.contact.png, each frame's "
       "video.frame-NNNN.report.{{txt,json}}\n  and video.report.{{txt,json}}\n",
       out_dir, first, last);
-  uint64_t mipgen_writes = 0, mipgen_differing = 0;
+  uint64_t unit_writes = 0, unit_differing = 0;
   for (const VideoFrameReport& f : frames) {
-    for (const VideoMipgenCheck& m : f.mipgen) {
-      mipgen_writes += m.writes;
-      mipgen_differing += m.differing + (m.writes != m.golden_writes);
+    for (const VideoFrameReport::Unit& u : f.unit) {
+      unit_writes += u.writes;
+      unit_differing += u.differing;
     }
   }
-  s += fmt::format(
-      "  mipgen: the block at {} over every rendered frame: {} writes, {}\n", engine, mipgen_writes,
-      mipgen_differing ? fmt::format("MISMATCH: {} differ from the front buffer", mipgen_differing)
-                       : "MATCH: every one the front buffer's cell");
+  s += fmt::format("  video unit = golden path on every frame: {} row writes, {}\n", unit_writes,
+                   unit_differing ? fmt::format("MISMATCH: {} cells differ", unit_differing)
+                                  : "MATCH: both buffers and the front, cell for cell");
   if (checked || !match()) {
     s += match()
              ? fmt::format(
@@ -128,8 +141,16 @@ std::string VideoRenderReport::json() const {
   j["chips"] = chips;
   j["frames_rendered"] = {first, last};
   j["videos"] = nlohmann::json::array();
-  for (size_t i = 0; i < videos.size(); ++i)
+  for (size_t i = 0; i < videos.size(); ++i) {
     j["videos"].push_back({{"video", videos[i]}, {"base", bases[i]}, {"drf", drfs[i]}});
+    if (i < units.size()) {
+      j["videos"][i]["unit"] = {{"items", units[i].items},
+                                {"cycles", units[i].cycles},
+                                {"cycles_per_item", units[i].cycles_per_item},
+                                {"check_against", units[i].against},
+                                {"match", units[i].match}};
+    }
+  }
   j["frames"] = nlohmann::json::array();
   for (const VideoFrameReport& f : frames) {
     nlohmann::json fj;
@@ -155,11 +176,11 @@ std::string VideoRenderReport::json() const {
                               {"lost_writes", v.lost_writes},
                               {"max_write_latency", v.max_latency}});
     }
-    for (size_t i = 0; i < f.mipgen.size(); ++i) {
-      const VideoMipgenCheck& m = f.mipgen[i];
-      fj["videos"][i]["mipgen"] = {
-          {"engine", engine},         {"writes", m.writes}, {"golden_writes", m.golden_writes},
-          {"differing", m.differing}, {"cycles", m.cycles}, {"match", m.match()}};
+    for (size_t i = 0; i < f.unit.size(); ++i) {
+      const VideoFrameReport::Unit& u = f.unit[i];
+      fj["videos"][i]["unit"] = {{"engine", engine},         {"cycles", u.cycles},
+                                 {"writes", u.writes},       {"reads", u.reads},
+                                 {"differing", u.differing}, {"match", u.differing == 0}};
     }
     fj["chip_cycles"] = chip_cycles(f.render);
     fj["files"] = f.render.files;

@@ -80,16 +80,22 @@ void RowBuffers::flush(uint64_t tag) {
   }
 }
 
-uint8_t RowBuffers::read_back(unsigned bank, uint32_t address) const {
+const RowBuffers::Buffer* RowBuffers::newest_holding(unsigned bank, uint32_t segment,
+                                                     uint32_t i) const {
   const Buffer* newest = nullptr;
-  const uint32_t segment = address / config_.segment_cells, i = address % config_.segment_cells;
   for (const Buffer& b : buffers_) {
     if (b.state != State::kFree && b.bank == bank && b.segment == segment && b.valid[i] &&
         (newest == nullptr || b.tag >= newest->tag)) {
       newest = &b;
     }
   }
-  return newest != nullptr ? newest->data[i] : memory_.at(bank).at(address);
+  return newest;
+}
+
+uint8_t RowBuffers::read_back(unsigned bank, uint32_t address) const {
+  const uint32_t i = address % config_.segment_cells;
+  const Buffer* b = newest_holding(bank, address / config_.segment_cells, i);
+  return b != nullptr ? b->data[i] : memory_.at(bank).at(address);
 }
 
 size_t RowBuffers::buffers_of(uint64_t tag) const {
@@ -165,6 +171,15 @@ void RowBuffers::read_access() {
   last_.segment = r.segment;
   last_.fault = fault;
   last_.wait = stats_.cycles - r.request_cycle;
+  // The cells a row buffer still holds, which the read's data take instead of the memory's.
+  last_.mask.assign(config_.segment_cells, false);
+  last_.data.assign(config_.segment_cells, 0);
+  for (uint32_t i = 0; i < config_.segment_cells; ++i) {
+    if (const Buffer* b = newest_holding(r.bank, r.segment, i)) {
+      last_.mask[i] = true;
+      last_.data[i] = b->data[i];
+    }
+  }
   ++stats_.read_accesses;
   stats_.read_cycles += fault ? 2 : 1;
   stats_.read_faults += fault;

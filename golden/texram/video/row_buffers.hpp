@@ -84,6 +84,9 @@ class RowBuffers {
   uint8_t read_back(unsigned bank, uint32_t address) const;
   // Writes of frames with a tag above `tag` wait (the swap barrier); ~0 holds none.
   void hold_after(uint64_t tag) { hold_after_ = tag; }
+  // No buffer holds a cell of the frame the barrier names (its tag): that frame is in the
+  // memory, and the video unit may swap it in. True when no frame is named.
+  bool held_frame_written() const { return buffers_of(hold_after_) == 0; }
   // Buffers holding cells of frame `tag`, in any state but free (0: all in memory).
   size_t buffers_of(uint64_t tag) const;
   size_t buffers_busy() const;  // No buffer ready or being written and no read waiting (collecting
@@ -94,9 +97,9 @@ class RowBuffers {
   // interlaced field 2): one access, a second cycle on a page fault. Reads go before the ready
   // buffers (they have a deadline, the line they serve; writes have buffers), in request order,
   // in a cycle the sampler does not want or once they have waited `read_wait` cycles (default
-  // 0: at once). Its data are the
-  // cells as read_back() gives them (a buffered cell is taken from its row buffer). Returns the
-  // number of reads requested so far; reads complete in request order.
+  // 0: at once). Its data are the cells as read_back() gives them at the access: the memory's,
+  // with those the access's mask names taken from its data (a row buffer's). Returns the number
+  // of reads requested so far; reads complete in request order.
   uint64_t request_read(unsigned bank, uint32_t segment);
   uint64_t reads_completed() const { return reads_completed_; }
 
@@ -110,9 +113,12 @@ class RowBuffers {
     unsigned bank = 0;
     uint32_t segment = 0;
     bool fault = false;
-    std::vector<bool> mask;     // a write: the cells written (segment_cells of them)
-    std::vector<uint8_t> data;  // a write: the buffer's cells (a cell not in the mask: 0)
-    uint64_t wait = 0;          // cycles from ready (a write) or request (a read) to the access
+    // A write: the cells written (segment_cells of them) and the buffer's cells. A read: the
+    // cells a row buffer holds (the newest buffer's, as read_back gives them), which the read's
+    // data take instead of the memory's. A cell not in the mask: 0.
+    std::vector<bool> mask;
+    std::vector<uint8_t> data;
+    uint64_t wait = 0;  // cycles from ready (a write) or request (a read) to the access
   };
   const Access& last_access() const { return last_; }
   // A new bound L and read bound, effective from the next cycle (the buffers stay).
@@ -137,6 +143,8 @@ class RowBuffers {
     std::vector<bool> valid;
   };
   Buffer* collecting(unsigned bank, uint32_t segment, uint64_t tag);
+  // The newest buffer (highest tag, then last) not free holding cell i of the segment.
+  const Buffer* newest_holding(unsigned bank, uint32_t segment, uint32_t i) const;
   void make_ready(size_t id);
   void write_access(size_t id);
   void read_access();

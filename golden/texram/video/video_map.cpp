@@ -19,14 +19,21 @@ const VideoMapConfig& checked(const VideoMapConfig& c) {
 }
 
 BankImage make_memory(const VideoMapConfig& c, const Geometry& g) {
-  const uint64_t end = uint64_t{c.base} + VideoMap::buffer_stride(g) + g.bank_cells();
+  const uint64_t base1 = c.base1 ? *c.base1 : uint64_t{c.base} + VideoMap::buffer_stride(g);
+  const uint64_t end = std::max<uint64_t>(c.base, base1) + g.bank_cells();
   if (end > chip::kBankCells) {
     throw std::invalid_argument("VideoMap: two buffers of " + std::to_string(g.bank_cells()) +
-                                " cells a bank at base " + std::to_string(c.base) +
-                                " end beyond the bank's " + std::to_string(chip::kBankCells));
+                                " cells a bank at " + std::to_string(c.base) + " and " +
+                                std::to_string(base1) + " end beyond the bank's " +
+                                std::to_string(chip::kBankCells));
+  }
+  if (std::max<uint64_t>(c.base, base1) - std::min<uint64_t>(c.base, base1) < g.bank_cells()) {
+    throw std::invalid_argument("VideoMap: buffers of " + std::to_string(g.bank_cells()) +
+                                " cells a bank at " + std::to_string(c.base) + " and " +
+                                std::to_string(base1) + " overlap");
   }
   BankImage m;
-  for (auto& bank : m) bank.assign(end, 0);
+  for (auto& bank : m) bank.assign(page_up(static_cast<uint32_t>(end)), 0);  // whole segments
   return m;
 }
 
@@ -43,6 +50,19 @@ VideoMap::VideoMap(const VideoMapConfig& config)
   d.log2_w = config.format.log2_w;
   d.log2_h = config.format.log2_h;
   d.sampler.kind = config.format.planes == 1 ? TexelKind::kLuminance : TexelKind::kTrueColour;
+  for (auto& slot : above_) slot.assign(line_cells(), 0);
+}
+
+uint32_t VideoMap::line_cells() const {
+  return static_cast<uint32_t>(config_.format.planes) * (geometry_.stored_width(0) / 2);
+}
+
+uint32_t VideoMap::line_start(uint32_t line) const { return (line >> 1) * line_cells(); }
+
+uint8_t& VideoMap::above_cell(uint32_t line, uint32_t x, int p) {
+  const size_t slot = 2 * ((line >> 1) & 1u) + (x & 1u);
+  return above_[slot]
+               [static_cast<size_t>(config_.format.planes) * (x >> 1) + static_cast<size_t>(p)];
 }
 
 void VideoMap::begin_frame() {
@@ -67,12 +87,12 @@ void VideoMap::end_frame(bool complete) {
     f.dropped = true;
     return;
   }
-  f.complete = true;
-  if (pending_) {
-    throw std::logic_error("VideoMap: frame " + std::to_string(f.tag) + " complete before frame " +
-                           std::to_string(frames_[*pending_].tag) +
-                           " was swapped in: the memory cannot keep up");
+  if (pending_) {  // the memory cannot keep up: not shown, like a dropped frame
+    f.dropped = true;
+    ++overruns_;
+    return;
   }
+  f.complete = true;
   newest_ = f.buffer;
   pending_ = frames_.size() - 1;
   rows_.hold_after(f.tag);  // the next frame writes the front buffer: held until the swap
@@ -89,8 +109,31 @@ void VideoMap::read_line_above(uint32_t above, uint32_t line) {
       if (std::find(segments.begin(), segments.end(), s) == segments.end()) segments.push_back(s);
     }
   }
-  for (const auto& [bank, segment] : segments)
+  for (const auto& [bank, segment] : segments) {
     reads_needed_[line] = rows_.request_read(bank, segment);
+    line_reads_.push_back({above, base});
+  }
+}
+
+void VideoMap::capture(const std::vector<uint8_t>& memory_cells) {
+  const RowBuffers::Access& a = rows_.last_access();
+  const uint32_t n = config_.arbiter.segment_cells;
+  if (a.kind != RowBuffers::Access::Kind::kRead || line_reads_.empty() ||
+      memory_cells.size() != n) {
+    throw std::logic_error("VideoMap::capture: no read to capture, or not a segment of cells");
+  }
+  const LineRead r = line_reads_.front();
+  line_reads_.pop_front();
+  const int planes = config_.format.planes;
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t address = a.segment * n + i;
+    const uint32_t first = r.base + line_start(r.line);
+    if (address < first || address - first >= line_cells()) continue;  // another line's cell
+    const uint32_t rel = address - first;
+    const uint32_t x = 2 * (rel / static_cast<uint32_t>(planes)) + (a.bank & 1u);
+    above_cell(r.line, x, static_cast<int>(rel % static_cast<uint32_t>(planes))) =
+        a.mask[i] ? a.data[i] : memory_cells[i];
+  }
 }
 
 void VideoMap::receive(const VideoItem& item) {
@@ -115,9 +158,14 @@ void VideoMap::receive(const VideoItem& item) {
       throw std::logic_error("VideoMap: the receiver and the generator disagree on the position");
     }
     MipgenInput in{item.bytes[static_cast<size_t>(p)], 0};
+    if (h == 2 && config_.format.fields() && r.y == 0) above_cell(0, r.x, p) = in.texel;
     if (s.needs_above()) {
-      const BankCell c = geometry_.cell(0, r.x, r.y - 1, p);
-      in.above = rows_.read_back(c.bank, base + c.address);
+      if (config_.arbiter.direct) {  // the reference: no reads, the memory as written
+        const BankCell c = geometry_.cell(0, r.x, r.y - 1, p);
+        in.above = memory_[c.bank][base + c.address];
+      } else {
+        in.above = above_cell(r.y - 1, r.x, p);
+      }
     }
     writes_.clear();
     s.step(in, writes_);
@@ -129,13 +177,21 @@ void VideoMap::receive(const VideoItem& item) {
 
 bool VideoMap::cycle(bool sampler_wants) {
   const bool granted = rows_.cycle(sampler_wants);
-  if (pending_ && rows_.buffers_of(frames_[*pending_].tag) == 0) {
+  const RowBuffers::Access& a = rows_.last_access();
+  if (a.kind == RowBuffers::Access::Kind::kRead && !config_.external_reads) {
+    const uint32_t n = config_.arbiter.segment_cells;
+    const auto& bank = memory_[a.bank];
+    capture({bank.begin() + a.segment * n, bank.begin() + (a.segment + 1) * n});
+  }
+  swapped_ = false;
+  if (pending_ && rows_.held_frame_written()) {
     FrameRecord& f = frames_[*pending_];
     chip::apply(drfs_, {static_cast<uint8_t>(config_.drf),
                         static_cast<uint8_t>(chip::DrfFieldId::kBase), buffer_base(f.buffer)});
     front_ = f.buffer;
     front_tag_ = f.tag;
     f.swap_cycle = cycles();
+    swapped_ = true;
     pending_.reset();
     rows_.hold_after(~uint64_t{0});
   }

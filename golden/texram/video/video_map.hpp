@@ -13,14 +13,20 @@
 // Interlaced field-2 items need `above`, the level-0 texel of the line above: the line is read
 // into the shift registers 826 a line ahead, as segment reads through the arbiter
 // (RowBuffers::request_read; line 0 at the start of field 1's last line, line y + 1 at the
-// start of field-2 line y; a two-line frame's line 0 is taken as it arrives), its cells as
-// RowBuffers::read_back gives them (row buffers first, then memory); a line that begins before
-// its reads are done is counted (late_reads). A dropped frame (video_port.hpp) has written part of
-// the back buffer; it is never shown, and the next frame, to the same buffer, writes every cell
-// again.
+// start of field-2 line y). The shift registers hold two lines (line a in slot (a / 2) mod 2, so
+// the line being read never overwrites the line in use); a read's cells of its line enter them
+// at the access, as RowBuffers gives them (a row buffer's cell, else the memory's). A two-line
+// frame's line 0 is taken into them as it arrives. A line that begins before its reads are done
+// is counted (late_reads) and takes what the registers hold. A dropped frame (video_port.hpp) has
+// written part of the back buffer; it is never shown, and the next frame, to the same buffer,
+// writes every cell again. A frame complete while the previous one still waits for its swap
+// (the memory cannot keep up) is not shown either: it is counted as an overrun, and the next
+// frame goes to the same buffer.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -36,9 +42,15 @@ namespace tmu::texram::video {
 
 struct VideoMapConfig {
   VideoFormat format;
-  uint32_t base = 0;  // buffer 0's first cell in every bank; buffer 1 follows it
+  uint32_t base = 0;  // buffer 0's first cell in every bank
   int drf = 1;        // the DRF (1..7) whose base shows the front buffer
   ArbiterConfig arbiter;
+  // The reads' memory data come from the caller (capture()), as in a unit whose memory answers
+  // later; by default from the model's own memory at the access.
+  bool external_reads = false;
+  // Buffer 1's first cell; by default the next page boundary after buffer 0 (buffer_stride).
+  // The buffers must not overlap.
+  std::optional<uint32_t> base1 = std::nullopt;
 };
 
 // One frame the port began.
@@ -60,7 +72,8 @@ class VideoMap {
   const VideoMapConfig& config() const { return config_; }
   const Geometry& geometry() const { return geometry_; }
   uint32_t buffer_base(int buffer) const {
-    return config_.base + static_cast<uint32_t>(buffer) * buffer_stride(geometry_);
+    if (buffer == 0) return config_.base;
+    return config_.base1 ? *config_.base1 : config_.base + buffer_stride(geometry_);
   }
   // Buffer 1 follows buffer 0 at the next page boundary: a buffer's bank_cells rounded up to a
   // DRAM page (512 cells), so that both buffers' lines fall on pages alike.
@@ -68,8 +81,19 @@ class VideoMap {
 
   // One item of the port, arriving in the current cycle.
   void receive(const VideoItem& item);
+  // New bounds L and read_wait, effective from the next cycle.
+  void set_waits(uint32_t max_wait, uint32_t read_wait) {
+    config_.arbiter.max_wait = max_wait;
+    config_.arbiter.read_wait = read_wait;
+    rows_.set_waits(max_wait, read_wait);
+  }
   // One memory cycle; returns whether the sampler got it. A swap due at its end is applied.
   bool cycle(bool sampler_wants);
+  // external_reads: the memory's cells of the read the last cycle() started
+  // (row_buffers().last_access(), segment_cells of them), before the next item.
+  void capture(const std::vector<uint8_t>& memory_cells);
+  // A swap was applied at the end of the last cycle().
+  bool swapped() const { return swapped_; }
 
   // The DRFs as the swaps leave them; drfs()[drf - 1].base is the front buffer's base.
   const chip::DrfFile& drfs() const { return drfs_; }
@@ -85,6 +109,8 @@ class VideoMap {
   // Interlaced field-2 lines whose line above had not been read into the shift registers when
   // the line began (0 at every rate the tests run).
   uint64_t late_reads() const { return late_reads_; }
+  // Frames complete while the previous one waited for its swap (not shown).
+  uint64_t overruns() const { return overruns_; }
 
   // Plane `plane`'s texel (x, y) of `level` in buffer `buffer`, read from the memory.
   uint8_t read(int buffer, int level, uint32_t x, uint32_t y, int plane) const;
@@ -96,6 +122,11 @@ class VideoMap {
   void end_frame(bool complete);
   // Requests the reads of level-0 line `above` of the frame under way, for field-2 line `line`.
   void read_line_above(uint32_t above, uint32_t line);
+  // The shift registers' cell of level-0 line `line`, column x, plane p (line even).
+  uint8_t& above_cell(uint32_t line, uint32_t x, int p);
+  // Level-0 line `line`'s first cell in its banks, relative to the buffer's base.
+  uint32_t line_start(uint32_t line) const;
+  uint32_t line_cells() const;  // cells of a level-0 line in each of its two banks
 
   VideoMapConfig config_;
   Geometry geometry_;
@@ -112,6 +143,15 @@ class VideoMap {
   std::optional<size_t> pending_;       // frames_ index of the complete frame awaiting its swap
   std::vector<uint64_t> reads_needed_;  // per line: reads that must be complete at its start
   uint64_t late_reads_ = 0;
+  uint64_t overruns_ = 0;
+  bool swapped_ = false;
+  // The shift registers: slot (line / 2) mod 2, column parity; line_cells() cells each.
+  std::array<std::vector<uint8_t>, 4> above_;
+  struct LineRead {
+    uint32_t line = 0;  // the level-0 line it reads
+    uint32_t base = 0;  // the buffer's base
+  };
+  std::deque<LineRead> line_reads_;  // requested, not yet accessed, in order
 };
 
 // Cycles at which the sampler wants the memory.

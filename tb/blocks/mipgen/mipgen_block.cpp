@@ -88,6 +88,7 @@ constexpr const char* kFourPlanes = "four-plane texture, plane > 0";
 constexpr const char* kLaterFrame = "first texel of a later frame";
 constexpr const char* kNewFormat = "first texel after a new format";
 constexpr const char* kFrameEnd = "last texel of a frame (top level)";
+constexpr const char* kRestart = "first texel after a frame cut short (start)";
 
 std::string level_case(int level) { return fmt::format("writes to level {}", level); }
 
@@ -194,6 +195,17 @@ std::vector<Txn> MipgenBlock::directed_items() const {
       for (const Txn& t : mipgen_frame_items(frame, f.interlaced)) items.push_back(t);
     }
   }
+  // A frame cut short in the middle of a field-1 line (as the video unit drops one), then a whole
+  // frame of the same format: its first texel, marked start, restarts the position at (0, 0).
+  const texram::MipgenConfig c = fixed({2, 3, true, 1, 0});
+  const uint32_t cw = 1u << c.log2_w, ch = 1u << c.log2_h;
+  items.push_back(mipgen_config_item(c));
+  std::vector<Txn> cut = mipgen_frame_items(random_frame(cw, ch, rng), c.interlaced);
+  cut.resize(std::min<size_t>(6, cut.size() - 1));
+  items.insert(items.end(), cut.begin(), cut.end());
+  for (const Txn& t : mipgen_frame_items(random_frame(cw, ch, rng), c.interlaced)) {
+    items.push_back(t);
+  }
   items.push_back(mipgen_config_item(first_));  // the random items go on in the setup's format
   return items;
 }
@@ -202,7 +214,8 @@ std::vector<Txn> MipgenBlock::random_items(std::mt19937_64& rng, size_t count) c
   std::vector<Txn> items;
   texram::MipgenConfig f = first_;
   int frames_left = uniform(rng, 1, 3);
-  while (items.size() < count) {
+  bool cut = false;  // the last frame was cut short: a whole frame must follow
+  while (items.size() < count || cut) {
     if (frames_left == 0) {  // a new format, as a video driver writes it between frames
       f = draw_format(rng);
       items.push_back(mipgen_config_item(f));
@@ -215,7 +228,12 @@ std::vector<Txn> MipgenBlock::random_items(std::mt19937_64& rng, size_t count) c
     const texram::Level8 frame =
         kind == 0 ? filled(w, h, (rng() & 1) ? 255 : static_cast<uint8_t>(rng() % 255))
                   : random_frame(w, h, rng);
-    for (const Txn& t : mipgen_frame_items(frame, f.interlaced)) items.push_back(t);
+    std::vector<Txn> frame_items = mipgen_frame_items(frame, f.interlaced);
+    // Now and then a frame cut short (a video unit drops it); the next frame, of the same
+    // format (a format is written between frames), restarts.
+    cut = frames_left > 0 && frame_items.size() > 1 && rng() % 6 == 0;
+    if (cut) frame_items.resize(1 + rng() % (frame_items.size() - 1));
+    for (const Txn& t : frame_items) items.push_back(t);
   }
   return items;
 }
@@ -239,7 +257,7 @@ std::vector<std::string> MipgenBlock::coverage_cases() const {
     cases.push_back(kSum0);
     cases.push_back(kSumMax);
   }
-  cases.insert(cases.end(), {kFourPlanes, kLaterFrame, kNewFormat, kFrameEnd});
+  cases.insert(cases.end(), {kFourPlanes, kLaterFrame, kNewFormat, kFrameEnd, kRestart});
   return cases;
 }
 
@@ -260,6 +278,7 @@ void MipgenBlock::cover(const std::vector<Txn>& items, size_t index, const Txn&,
   const bool after_config = cover_.frames.items_since_configuration() == 0;
   if (after_config && cover_.frames.configurations() > 1) ++cov[kNewFormat];
   if (!after_config && s.frame_start()) ++cov[kLaterFrame];
+  if (items[index].f[D::in_start] != 0 && !s.frame_start()) ++cov[kRestart];
   if (s.needs_above()) ++cov[kField2];
   if (s.config().interlaced && s.height() == 1) ++cov[kOneLine];
   if (s.config().plane > 0) ++cov[kFourPlanes];

@@ -37,7 +37,7 @@ std::vector<Txn> mipgen_frame_items(const texram::Level8& level0, bool interlace
   std::vector<Txn> items;
   items.reserve(level0.texels.size());
   for (const texram::MipgenInput& in : texram::mipgen_source(level0, interlaced)) {
-    items.push_back(channel_item(D::table(), "in", {in.texel, in.above}));
+    items.push_back(channel_item(D::table(), "in", {in.texel, in.above, items.empty() ? 1u : 0u}));
   }
   return items;
 }
@@ -109,6 +109,9 @@ void MipgenFrames::configure(const Txn& cfg) {
 
 void MipgenFrames::step(const Txn& item, std::vector<texram::CellWrite>& out) {
   if (!stream_) throw std::runtime_error("mipgen: a texel before the first configuration item");
+  if (item.f[D::in_start] != 0 && !stream_->frame_start()) {
+    stream_.emplace(stream_->config());  // a frame cut short: the position restarts
+  }
   stream_->step(
       {static_cast<uint8_t>(item.f[D::in_texel]), static_cast<uint8_t>(item.f[D::in_above])}, out);
   ++since_;

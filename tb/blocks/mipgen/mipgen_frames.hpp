@@ -19,7 +19,8 @@ texram::MipgenConfig mipgen_format_of(const Txn& cfg);
 // "8 x 4 interlaced, plane 3 of 4", for messages.
 std::string mipgen_format_text(const texram::MipgenConfig& format);
 
-// One frame's texel items in source order (interlaced: fields, with the texel above).
+// One frame's texel items in source order (interlaced: fields, with the texel above), the first
+// marked start.
 std::vector<Txn> mipgen_frame_items(const texram::Level8& level0, bool interlaced);
 // What a driver sends for one frame of a new format: its configuration item, then the frame
 // (whose size must be the format's).
@@ -33,7 +34,8 @@ Txn mipgen_write_txn(const texram::CellWrite& w);
 texram::CellWrite mipgen_txn_write(const Txn& t);
 
 // The golden generator over a run: each configuration item starts a new stream of its format;
-// texel items step the stream in effect. Errors (std::runtime_error) for what the unit cannot
+// texel items step the stream in effect, and a texel marked start begins a new frame of it (the
+// frame under way, cut short, is left). Errors (std::runtime_error) for what the unit cannot
 // take: a texel before the first configuration, a configuration in the middle of a frame (the
 // RTL's source position and partial sums belong to the old format), a format outside the
 // unit's (a side above 2^10, a plane beyond the texture's).

@@ -70,6 +70,7 @@ class Rows {
       const video::RowBuffers::Access& a = rows_->last_access();
       *out = Txn{};
       out->f[D::out_granted] = granted;
+      out->f[D::out_drained] = rows_->held_frame_written();
       if (a.kind == video::RowBuffers::Access::Kind::kNone) return;
       out->f[D::out_write] = a.kind == video::RowBuffers::Access::Kind::kWrite;
       out->f[D::out_read] = a.kind == video::RowBuffers::Access::Kind::kRead;
@@ -185,6 +186,7 @@ class Stimulus {
       if (rng() % 3 == 0) cycles(uniform(rng, 1, 4), rate, rng);
       if (rng() % 40 == 0)
         read(static_cast<unsigned>(rng() % 8), static_cast<uint32_t>(rng() % 2048));
+      if (rng() % 40 == 0) read(bank, addr);  // a row being collected: its cells come back
     }
     add(flush_item(tag));
     cycles(uniform(rng, 0, 3) == 0 ? uniform(rng, 100, 400) : uniform(rng, 0, 40), rate, rng);
@@ -210,6 +212,8 @@ constexpr const char* kFull = "full row written";
 constexpr const char* kHeld = "a ready row held by the swap barrier";
 constexpr const char* kLost = "cell write lost (no free buffer)";
 constexpr const char* kWaitZeroL = "write at L = 0";
+constexpr const char* kReadBuffered = "read takes a cell from a row buffer";
+constexpr const char* kDrained = "drained: the held frame's buffers all written";
 
 }  // namespace
 
@@ -217,6 +221,7 @@ struct VideoRowsBlock::CoverState {
   Rows rows;
   size_t next = 0;
   bool pending_second = false;  // a faulting access started last cycle
+  bool drained = true;          // the last cycle's drained
 };
 
 VideoRowsBlock::VideoRowsBlock(const BlockOptions& options)
@@ -292,8 +297,9 @@ std::vector<Txn> VideoRowsBlock::random_items(std::mt19937_64& rng, size_t count
 std::unique_ptr<Model> VideoRowsBlock::golden() const { return std::make_unique<Golden>(); }
 
 std::vector<std::string> VideoRowsBlock::coverage_cases() const {
-  return {kWrite,   kRead,       kWriteFault, kWriteHit, kReadFault, kForcedWrite, kForcedRead,
-          kGranted, kLostSecond, kPartial,    kFull,     kHeld,      kLost,        kWaitZeroL};
+  return {kWrite,      kRead,      kWriteFault,   kWriteHit, kReadFault, kForcedWrite,
+          kForcedRead, kGranted,   kLostSecond,   kPartial,  kFull,      kHeld,
+          kLost,       kWaitZeroL, kReadBuffered, kDrained};
 }
 
 void VideoRowsBlock::cover(const std::vector<Txn>& items, size_t index, const Txn& output,
@@ -311,7 +317,10 @@ void VideoRowsBlock::cover(const std::vector<Txn>& items, size_t index, const Tx
     Txn out;
     c.rows.step(t, &out);
     if (c.rows.rows().stats().lost_writes > lost) ++cov[kLost];
-    if (static_cast<int>(t.f[0]) == D::op_cycle) c.pending_second = out.f[D::out_fault] != 0;
+    if (static_cast<int>(t.f[0]) == D::op_cycle) {
+      c.pending_second = out.f[D::out_fault] != 0;
+      c.drained = out.f[D::out_drained] != 0;
+    }
   }
   const bool sampler = items[index].f[D::cycle_sampler] != 0;
   const bool second = c.pending_second;  // this cycle is a fault's second
@@ -330,8 +339,17 @@ void VideoRowsBlock::cover(const std::vector<Txn>& items, size_t index, const Tx
     ++cov[full ? kFull : kPartial];
     if (c.rows.rows().config().max_wait == 0) ++cov[kWaitZeroL];
   }
+  const bool was_drained = c.drained;
+  c.drained = output.f[D::out_drained] != 0;
+  if (c.drained && !was_drained) ++cov[kDrained];
   if (output.f[D::out_read] != 0) {
     ++cov[kRead];
+    for (uint32_t i = 0; i < kCells; ++i) {
+      if (output.f[D::out_mask + i] != 0) {
+        ++cov[kReadBuffered];
+        break;
+      }
+    }
     if (output.f[D::out_fault] != 0) ++cov[kReadFault];
     if (sampler) ++cov[kForcedRead];
   }
