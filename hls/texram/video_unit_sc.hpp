@@ -134,13 +134,8 @@ class VideoUnitSc : public sc_core::sc_module {
         // Not a configuration yet (the ports before the driver writes them): no map.
       }
       if (in_valid_i.read() && in_ready_o.read()) {
-        texram::video::VideoItem it;
-        it.flags = static_cast<uint8_t>(in_flags_i.read());
-        const auto texel = static_cast<uint32_t>(in_texel_i.read());
-        for (int p = 0; p < 4; ++p) {
-          it.bytes[static_cast<size_t>(p)] = static_cast<uint8_t>(texel >> (24 - 8 * p));
-        }
-        unit.receive(it);
+        unit.receive(texram::video::video_item(static_cast<uint8_t>(in_flags_i.read()),
+                                               static_cast<uint32_t>(in_texel_i.read())));
       }
       if (cycle_valid_i.read() && cycle_ready_o.read()) {
         Out o;

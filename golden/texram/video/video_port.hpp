@@ -50,6 +50,20 @@ struct VideoItem {
   friend bool operator==(const VideoItem&, const VideoItem&) = default;
 };
 
+// The item's bytes as the port's texel word (VideoTexel: plane p in bits 31 - 8p .. 24 - 8p),
+// and back.
+constexpr uint32_t texel_word(const VideoItem& item) {
+  uint32_t w = 0;
+  for (size_t p = 0; p < 4; ++p) w |= uint32_t{item.bytes[p]} << (24 - 8 * p);
+  return w;
+}
+constexpr VideoItem video_item(uint8_t flags, uint32_t texel_word) {
+  VideoItem it;
+  it.flags = flags;
+  for (size_t p = 0; p < 4; ++p) it.bytes[p] = static_cast<uint8_t>(texel_word >> (24 - 8 * p));
+  return it;
+}
+
 // One frame: one Level8 per plane, all of the format's size.
 using VideoFrame = std::vector<Level8>;
 

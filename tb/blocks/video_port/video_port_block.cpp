@@ -32,11 +32,8 @@ video::VideoFormat format_of(const Txn& cfg) {
 }
 
 video::VideoItem item_of(const Txn& t) {
-  video::VideoItem it;
-  it.flags = static_cast<uint8_t>(t.f[D::in_flags]);
-  const auto texel = static_cast<uint32_t>(t.f[D::in_texel]);
-  for (int p = 0; p < 4; ++p) it.bytes[static_cast<size_t>(p)] = (texel >> (24 - 8 * p)) & 0xFFu;
-  return it;
+  return video::video_item(static_cast<uint8_t>(t.f[D::in_flags]),
+                           static_cast<uint32_t>(t.f[D::in_texel]));
 }
 
 // The receiver as the hardware has it: reset to a 1 x 1 progressive one-plane format; a
@@ -161,9 +158,7 @@ Txn video_port_config_item(const video::VideoFormat& f) {
 }
 
 Txn video_port_item(const video::VideoItem& it) {
-  uint64_t texel = 0;
-  for (size_t p = 0; p < 4; ++p) texel |= uint64_t{it.bytes[p]} << (24 - 8 * p);
-  return channel_item(D::table(), "in", {it.flags, texel});
+  return channel_item(D::table(), "in", {it.flags, video::texel_word(it)});
 }
 
 std::vector<Txn> video_port_frame(const video::VideoFormat& format, uint32_t k) {

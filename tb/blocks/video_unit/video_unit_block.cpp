@@ -43,17 +43,12 @@ constexpr uint32_t kCells = 8;
 constexpr uint64_t kWaitMax = 0xFFFF;  // the RTL's waits saturate at 16 bits
 
 video::VideoItem item_of(const Txn& t) {
-  video::VideoItem it;
-  it.flags = static_cast<uint8_t>(t.f[D::in_flags]);
-  const auto texel = static_cast<uint32_t>(t.f[D::in_texel]);
-  for (int p = 0; p < 4; ++p) it.bytes[static_cast<size_t>(p)] = (texel >> (24 - 8 * p)) & 0xFFu;
-  return it;
+  return video::video_item(static_cast<uint8_t>(t.f[D::in_flags]),
+                           static_cast<uint32_t>(t.f[D::in_texel]));
 }
 
 Txn in_item(const video::VideoItem& it) {
-  uint64_t texel = 0;
-  for (int p = 0; p < 4; ++p) texel |= uint64_t{it.bytes[static_cast<size_t>(p)]} << (24 - 8 * p);
-  return channel_item(D::table(), "in", {it.flags, texel});
+  return channel_item(D::table(), "in", {it.flags, video::texel_word(it)});
 }
 
 Txn cycle_item(bool sampler) { return channel_item(D::table(), "cycle", {sampler ? 1u : 0u}); }
