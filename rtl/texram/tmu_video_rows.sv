@@ -261,7 +261,7 @@ module tmu_video_rows #(
   assign granted  = busy_now == '0 && sampler;
 
   // A read's data take the cells a row buffer still holds: per cell, the newest buffer of the
-  // bank holding that row's cell (highest tag, then the last), as golden's read_back.
+  // bank holding that row's cell (highest tag, then the last), as golden's newest_holding.
   logic [Cells-1:0]   rd_mask;
   logic [8*Cells-1:0] rd_data;
   logic [TagW-1:0]    rd_best [Cells];

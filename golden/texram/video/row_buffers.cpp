@@ -92,12 +92,6 @@ const RowBuffers::Buffer* RowBuffers::newest_holding(unsigned bank, uint32_t seg
   return newest;
 }
 
-uint8_t RowBuffers::read_back(unsigned bank, uint32_t address) const {
-  const uint32_t i = address % config_.segment_cells;
-  const Buffer* b = newest_holding(bank, address / config_.segment_cells, i);
-  return b != nullptr ? b->data[i] : memory_.at(bank).at(address);
-}
-
 size_t RowBuffers::buffers_of(uint64_t tag) const {
   return static_cast<size_t>(std::count_if(buffers_.begin(), buffers_.end(), [&](const Buffer& b) {
     return b.state != State::kFree && b.tag == tag;

@@ -79,9 +79,6 @@ class RowBuffers {
   void put(unsigned bank, uint32_t address, uint8_t value, uint64_t tag);
   // Frame `tag` ends: every buffer collecting its cells becomes ready.
   void flush(uint64_t tag);
-  // The cell as the writes so far leave it: the newest buffer holding it, else the memory
-  // (the read back of the line above for interlaced field 2, 000 §12).
-  uint8_t read_back(unsigned bank, uint32_t address) const;
   // Writes of frames with a tag above `tag` wait (the swap barrier); ~0 holds none.
   void hold_after(uint64_t tag) { hold_after_ = tag; }
   // No buffer holds a cell of the frame the barrier names (its tag): that frame is in the
@@ -97,9 +94,10 @@ class RowBuffers {
   // interlaced field 2): one access, a second cycle on a page fault. Reads go before the ready
   // buffers (they have a deadline, the line they serve; writes have buffers), in request order,
   // in a cycle the sampler does not want or once they have waited `read_wait` cycles (default
-  // 0: at once). Its data are the cells as read_back() gives them at the access: the memory's,
-  // with those the access's mask names taken from its data (a row buffer's). Returns the number
-  // of reads requested so far; reads complete in request order.
+  // 0: at once). Its data are the cells as the writes so far leave them at the access: the
+  // memory's, with those the access's mask names taken from its data (the newest row buffer
+  // holding each). Returns the number of reads requested so far; reads complete in request
+  // order.
   uint64_t request_read(unsigned bank, uint32_t segment);
   uint64_t reads_completed() const { return reads_completed_; }
 
@@ -114,8 +112,8 @@ class RowBuffers {
     uint32_t segment = 0;
     bool fault = false;
     // A write: the cells written (segment_cells of them) and the buffer's cells. A read: the
-    // cells a row buffer holds (the newest buffer's, as read_back gives them), which the read's
-    // data take instead of the memory's. A cell not in the mask: 0.
+    // cells a row buffer holds (the newest buffer's), which the read's data take instead of the
+    // memory's. A cell not in the mask: 0.
     std::vector<bool> mask;
     std::vector<uint8_t> data;
     uint64_t wait = 0;  // cycles from ready (a write) or request (a read) to the access
