@@ -58,9 +58,8 @@ IdealPlan ideal_plan(glm::dvec2 r1, glm::dvec2 r2, const IdealConfig& config) {
   return p;
 }
 
-std::array<double, 4> ideal_sample(const texram::IdealTexture& texture,
-                                   const texram::SamplerConfig& sampler, const IdealConfig& config,
-                                   glm::dvec2 uv, glm::dvec2 r1, glm::dvec2 r2, uint32_t shade) {
+std::array<double, 4> ideal_march(const IdealConfig& config, glm::dvec2 uv, glm::dvec2 r1,
+                                  glm::dvec2 r2, const IdealProbe& probe) {
   const IdealPlan p = ideal_plan(r1, r2, config);
   const int n = 1 << p.log2_n;
   const double lambda = std::max(p.lambda, kFinestLambda);
@@ -68,11 +67,19 @@ std::array<double, 4> ideal_sample(const texram::IdealTexture& texture,
   for (int i = 0; i < n; ++i) {
     const double t = (2.0 * i - (n - 1)) / (2.0 * n);
     const glm::dvec2 at = uv + t * p.step;
-    const auto c = texram::ideal_sample(texture, sampler, at.x, at.y, lambda, shade);
+    const auto c = probe(at.x, at.y, lambda);
     for (size_t ch = 0; ch < 4; ++ch) sum[ch] += c[ch];
   }
   for (double& s : sum) s /= n;
   return sum;
+}
+
+std::array<double, 4> ideal_sample(const texram::IdealTexture& texture,
+                                   const texram::SamplerConfig& sampler, const IdealConfig& config,
+                                   glm::dvec2 uv, glm::dvec2 r1, glm::dvec2 r2, uint32_t shade) {
+  return ideal_march(config, uv, r1, r2, [&](double u, double v, double lambda) {
+    return texram::ideal_sample(texture, sampler, u, v, lambda, shade);
+  });
 }
 
 std::array<double, 4> supersampled(const texram::IdealTexture& texture,

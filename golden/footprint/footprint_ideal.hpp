@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <glm/glm.hpp>
 
 #include "footprint/q_rule.hpp"
@@ -38,7 +39,16 @@ struct IdealPlan {
 };
 IdealPlan ideal_plan(glm::dvec2 r1, glm::dvec2 r2, const IdealConfig& config);
 
-// u, v in texels of level 0. Returns RGBA, 0..255 each.
+// A probe's sample at (u, v) in texels of level 0 and lambda in levels (below 0 where the
+// footprint is smaller than a texel): RGBA, 0..255 each.
+using IdealProbe = std::function<std::array<double, 4>(double u, double v, double lambda)>;
+
+// The footprint's probes (ideal_plan) each sampled by `probe`, averaged.
+std::array<double, 4> ideal_march(const IdealConfig& config, glm::dvec2 uv, glm::dvec2 r1,
+                                  glm::dvec2 r2, const IdealProbe& probe);
+
+// u, v in texels of level 0; the probes through the ideal trilinear unit. Returns RGBA, 0..255
+// each.
 std::array<double, 4> ideal_sample(const texram::IdealTexture& texture,
                                    const texram::SamplerConfig& sampler, const IdealConfig& config,
                                    glm::dvec2 uv, glm::dvec2 r1, glm::dvec2 r2, uint32_t shade);

@@ -77,18 +77,21 @@ UnitRun texture_unit(const host::Material& mat, const MaterialTexture& tex,
 glm::dvec4 ideal_texture(const host::Material& mat, const MaterialTexture& tex,
                          const texram::SamplerConfig& sampler, const host::Fragment& f,
                          uint32_t shade) {
-  std::array<double, 4> s;
-  if (mat.footprint) {
-    const footprint::IdealConfig ic{mat.footprint->log2_max_probes, mat.footprint->q_rule,
-                                    footprint::Direction::kLongerSide};
-    s = footprint::ideal_sample(*tex.ideal, sampler, ic, f.uv, f.r1, f.r2, shade);
-  } else if (tex.ideal_detail) {
+  // A sample at (u, v, lambda): through the detail path where the material has a detail map.
+  const auto sample = [&](double u, double v, double lambda) {
+    if (!tex.ideal_detail) return texram::ideal_sample(*tex.ideal, sampler, u, v, lambda, shade);
     const auto combine =
         mat.detail->modulate ? texram::DetailCombine::kModulate : texram::DetailCombine::kReplace;
-    s = texram::ideal_detail_sample(*tex.ideal, sampler, *tex.ideal_detail, combine, f.uv.x, f.uv.y,
-                                    f.lambda, shade);
+    return texram::ideal_detail_sample(*tex.ideal, sampler, *tex.ideal_detail, combine, u, v,
+                                       lambda, shade);
+  };
+  std::array<double, 4> s;
+  if (mat.footprint) {  // each probe sampled as the chip's probes are, detail and all
+    const footprint::IdealConfig ic{mat.footprint->log2_max_probes, mat.footprint->q_rule,
+                                    footprint::Direction::kLongerSide};
+    s = footprint::ideal_march(ic, f.uv, f.r1, f.r2, sample);
   } else {
-    s = texram::ideal_sample(*tex.ideal, sampler, f.uv.x, f.uv.y, f.lambda, shade);
+    s = sample(f.uv.x, f.uv.y, f.lambda);
   }
   return {s[0], s[1], s[2], s[3]};
 }
@@ -180,11 +183,6 @@ Pipeline::Pipeline(const host::Scene& scene, Level level, int chips, const Video
       if (level != Level::kIdeal && chips <= 0) {
         throw InputError(scene.path, at,
                          "detail maps are sampled by the TEXRAM chip only: render with --chips N");
-      }
-      if (level == Level::kIdeal && mat.detail && mat.footprint) {
-        throw InputError(scene.path, at,
-                         "the ideal footprint marcher has no detail path (the chip's probes take "
-                         "it: compare golden with hls or rtl instead)");
       }
       try {
         if (level == Level::kIdeal) {
