@@ -1,8 +1,10 @@
 // A scene's video map on its way into a chip (000 §11-12, docs/video.md "Rendering a video"):
 // the source's frames (generated, render/video_pattern, or numbered image files) as the video
-// port's items through the golden VideoMap (receiver -> one MipgenStream a plane -> page-row
-// buffers and the arbiter -> the chip's memory, the chip-side swap of the DRF's base), and the
-// two buffers as they stand, for the chip's memory (render/drf_compile places them).
+// port's items through the golden VideoMap at the chip's 512-cell rows (receiver -> one
+// MipgenStream a plane -> page-row buffers and the arbiter -> the memory, the chip-side swap of
+// the DRF's base), and the two buffers as they stand. The render's timing at the video's rate,
+// and the reference the video unit's buffers (render/video_unit_feed, what the chip samples)
+// must equal cell for cell.
 //
 // Time: a frame's items arrive at the video's rate (width x height x fps texels a second,
 // video_rate), the sampler wanting every memory cycle meanwhile (the worst case for it: every
