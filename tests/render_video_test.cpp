@@ -268,6 +268,28 @@ TEST(VideoRenderTest, RtlEqualsGoldenOnTheChipsEveryFrame) {
   fs::remove_all(dir);
 }
 
+// A format the co-simulated unit cannot take (an interlaced 256 x 256 four-plane video: a line
+// of 1 KiB needs 128 row reads at 8-cell rows, more than its read queue of 64) still renders: the
+// golden VideoMap writes the chip's memory, the report says why the unit did not run and names the
+// stream as host work; the chip is rtl = golden.
+TEST(VideoRenderTest, AFormatTheUnitCannotTakeIsWrittenByTheGoldenPath) {
+  const fs::path dir = temp_dir("fallback");
+  const fs::path scene = write_scene(dir, generated(true, 4, 1, 256));
+  const RenderOptions o = checked_on_a_chip(Level::kRtl, dir / "out");
+  std::ostringstream log;
+  VideoRenderReport rep;
+  EXPECT_EQ(render_video(scene.string(), o, {0, 0}, log, &rep), 0) << log.str();
+  ASSERT_EQ(rep.units.size(), 1u);
+  EXPECT_NE(rep.units[0].refused.find("reads of the line above"), std::string::npos);
+  ASSERT_EQ(rep.frames.size(), 1u);
+  EXPECT_FALSE(rep.frames[0].unit[0].by_unit);
+  EXPECT_EQ(rep.frames[0].shown[0], 0);
+  EXPECT_TRUE(rep.match());
+  EXPECT_NE(log.str().find("video stream of screen"), std::string::npos);
+  EXPECT_NE(log.str().find("not run"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 // A video is the texture DRF of a chain like any texture: after a bump map's emit DRF, before an
 // environment; the chain is on the chip (its DRFs) and rtl = golden.
 TEST(VideoRenderTest, AVideoInAChainWithABumpMapOrAnEnvironment) {

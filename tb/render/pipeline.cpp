@@ -157,12 +157,19 @@ Pipeline::Pipeline(const host::Scene& scene, Level level, int chips, const Video
           video && m < video->size() && (*video)[m] ? (*video)[m] : empty_video_buffers(*mat.video);
       mt.texram = mt.video->buffers[static_cast<size_t>(mt.video->front)];
       mt.size = {mat.video->width, mat.video->height};
-      note_host_work(
-          {"video timing of " + mat.name + " at the scene's rate (000 §11-12)",
-           "the chip's memory is what the video unit at the engine wrote (render/video_unit_feed, "
-           "8-cell rows); the cycles at the video's rate and the chip's "
-           "512-cell rows, in the video report, are the golden VideoMap's on the host, whose "
-           "buffers are compared with the unit's cell for cell (docs/video.md)"});
+      if (mt.video->by_unit) {
+        note_host_work(
+            {"video timing of " + mat.name + " at the scene's rate (000 §11-12)",
+             "the chip's memory is what the video unit at the engine wrote "
+             "(render/video_unit_feed, 8-cell rows); the cycles at the video's rate and the "
+             "chip's 512-cell rows, in the video report, are the golden VideoMap's on the host, "
+             "whose buffers are compared with the unit's cell for cell (docs/video.md)"});
+      } else {
+        note_host_work({"video stream of " + mat.name + " (000 §11-12)",
+                        "the golden VideoMap on the host writes the chip's memory: the "
+                        "co-simulated video unit cannot take this format (the video report "
+                        "says why)"});
+      }
     } else {
       try {
         load_texture(mat, level, mt);

@@ -29,7 +29,8 @@ namespace tmu::render {
 struct VideoBuffers {
   std::array<std::shared_ptr<const texram::TexramTexture>, 2> buffers;
   int front = 0;
-  int shown = -1;  // the video frame the front buffer holds (-1: none yet, cells 0)
+  int shown = -1;        // the video frame the front buffer holds (-1: none yet, cells 0)
+  bool by_unit = false;  // the video unit's writes (render/video_unit_feed), else golden's
 };
 // Per scene material, its video's buffers (null for a material without a video).
 using VideoState = std::vector<std::shared_ptr<const VideoBuffers>>;

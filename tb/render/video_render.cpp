@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -89,25 +90,30 @@ int render_video(const std::string& scene_path, const RenderOptions& o, FrameRan
   // and DRF, which the VideoMap's swaps then write.
   int code = 0;
   std::vector<VideoFeed> feeds;
-  std::vector<VideoUnitFeed> units;  // per video: the video unit at the engine over every frame
+  // Per video: the video unit at the engine over every frame, or none where the co-simulated unit
+  // cannot take the format (then the golden VideoMap writes the chip's memory, as host work).
+  std::vector<std::optional<VideoUnitFeed>> units;
   {
     const Pipeline placed(scene, Level::kGolden, o.chips);
     for (size_t m : videos) {
       const auto [base, drf] = video_placement(scene, *placed.chips(), m);
       feeds.emplace_back(*scene.materials[m].video, base, drf);
-      try {
-        units.push_back(
-            feed_video_unit(*scene.materials[m].video, base, range.last, o.level, o.check));
-      } catch (const std::runtime_error& e) {  // a format the unit cannot take
-        throw InputError(scene_path, "materials." + scene.materials[m].name + ".video", e.what());
-      }
       rep.videos.push_back(describe(scene.materials[m]));
       rep.bases.push_back(base);
       rep.drfs.push_back(drf);
-      const UnitRun& u = units.back().run;
-      rep.units.push_back({u.items.size(), u.result.outputs.size(), units.back().cycles_per_item,
-                           units.back().check_level,
-                           units.back().check ? units.back().check->match() : true});
+      try {
+        units.push_back(
+            feed_video_unit(*scene.materials[m].video, base, range.last, o.level, o.check));
+      } catch (const std::runtime_error& e) {  // a format the co-simulated unit cannot take
+        units.push_back(std::nullopt);
+        rep.units.push_back({});
+        rep.units.back().refused = e.what();
+        continue;
+      }
+      const UnitRun& u = units.back()->run;
+      rep.units.push_back({u.items.size(), u.result.outputs.size(), units.back()->cycles_per_item,
+                           units.back()->check_level,
+                           units.back()->check ? units.back()->check->match() : true, ""});
       if (!rep.units.back().match) code = 1;
     }
   }
@@ -125,13 +131,19 @@ int render_video(const std::string& scene_path, const RenderOptions& o, FrameRan
                          e.what());
       }
       // The chip samples what the video unit wrote; the golden path must have written the same.
-      const VideoUnitFrame& u = units[i].frames[static_cast<size_t>(f)];
-      (*state)[videos[i]] = u.buffers;
-      fr.shown.push_back(u.buffers->shown);
-      fr.front.push_back(u.buffers->front);
-      fr.unit.push_back(
-          {u.cycles, u.writes, u.reads, differing_cells(*u.buffers, *feeds[i].buffers())});
-      if (fr.unit.back().differing != 0) code = 1;
+      if (units[i]) {
+        const VideoUnitFrame& u = units[i]->frames[static_cast<size_t>(f)];
+        (*state)[videos[i]] = u.buffers;
+        fr.unit.push_back(
+            {u.cycles, u.writes, u.reads, differing_cells(*u.buffers, *feeds[i].buffers()), true});
+        if (fr.unit.back().differing != 0) code = 1;
+      } else {
+        (*state)[videos[i]] = feeds[i].buffers();
+        fr.unit.push_back({});
+        fr.unit.back().by_unit = false;
+      }
+      fr.shown.push_back((*state)[videos[i]]->shown);
+      fr.front.push_back((*state)[videos[i]]->front);
     }
     if (f < range.first) continue;
     // The chip's DRF reads the front buffer at the base the VideoMap's swap wrote.

@@ -43,6 +43,7 @@ struct VideoFrameReport {
   struct Unit {
     uint64_t cycles = 0, writes = 0, reads = 0;
     uint64_t differing = 0;  // cells of its two buffers (and the front) not the golden path's
+    bool by_unit = true;     // false: the unit did not run, the golden VideoMap wrote the memory
   };
   std::vector<Unit> unit;
   RenderReport render;
@@ -59,6 +60,10 @@ struct VideoRenderReport {
     int cycles_per_item = 1;       // the port's rate: a texel in this many cycles
     std::string against;           // the check's reference level ("" unchecked)
     bool match = true;             // its outputs, requests and counters equal the reference's
+    // Why the co-simulated unit did not run (a format it cannot take: an interlaced line whose
+    // reads overflow its queue), or empty. Then the golden VideoMap writes the chip's memory, and
+    // the report names it as host work.
+    std::string refused;
   };
   std::vector<UnitRunReport> units;  // per video material
   std::vector<VideoFrameReport> frames;

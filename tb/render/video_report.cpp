@@ -27,6 +27,7 @@ std::string verdict(const RenderReport& r) {
 
 // "2731 writes =", or "2731 writes, 3 !=" (the unit's buffers against the golden path's cells).
 std::string unit_cell(const VideoFrameReport::Unit& u) {
+  if (!u.by_unit) return "golden (host)";
   return u.differing ? fmt::format("{} writes, {} !=", u.writes, u.differing)
                      : fmt::format("{} writes =", u.writes);
 }
@@ -88,6 +89,13 @@ std::string VideoRenderReport::text() const {
       engine);
   for (size_t i = 0; i < units.size(); ++i) {
     const UnitRunReport& u = units[i];
+    if (!u.refused.empty()) {
+      s += fmt::format(
+          "  video unit of {}: not run ({}); host work: the golden VideoMap writes "
+          "the chip's memory\n",
+          videos[i].substr(0, videos[i].find(':')), u.refused);
+      continue;
+    }
     s += fmt::format("  video unit of {} at {}: {} items, {} memory cycles (a texel in {}){}\n",
                      videos[i].substr(0, videos[i].find(':')), engine, u.items, u.cycles,
                      u.cycles_per_item,
@@ -120,9 +128,10 @@ std::string VideoRenderReport::text() const {
       unit_differing += u.differing;
     }
   }
-  s += fmt::format("  video unit = golden path on every frame: {} row writes, {}\n", unit_writes,
-                   unit_differing ? fmt::format("MISMATCH: {} cells differ", unit_differing)
-                                  : "MATCH: both buffers and the front, cell for cell");
+  if (unit_writes > 0 || unit_differing > 0)
+    s += fmt::format("  video unit = golden path on every frame: {} row writes, {}\n", unit_writes,
+                     unit_differing ? fmt::format("MISMATCH: {} cells differ", unit_differing)
+                                    : "MATCH: both buffers and the front, cell for cell");
   if (checked || !match()) {
     s += match()
              ? fmt::format(
@@ -148,7 +157,8 @@ std::string VideoRenderReport::json() const {
                                 {"cycles", units[i].cycles},
                                 {"cycles_per_item", units[i].cycles_per_item},
                                 {"check_against", units[i].against},
-                                {"match", units[i].match}};
+                                {"match", units[i].match},
+                                {"refused", units[i].refused}};
     }
   }
   j["frames"] = nlohmann::json::array();
@@ -178,9 +188,12 @@ std::string VideoRenderReport::json() const {
     }
     for (size_t i = 0; i < f.unit.size(); ++i) {
       const VideoFrameReport::Unit& u = f.unit[i];
-      fj["videos"][i]["unit"] = {{"engine", engine},         {"cycles", u.cycles},
-                                 {"writes", u.writes},       {"reads", u.reads},
-                                 {"differing", u.differing}, {"match", u.differing == 0}};
+      fj["videos"][i]["unit"] = {{"engine", u.by_unit ? engine : "golden (host)"},
+                                 {"cycles", u.cycles},
+                                 {"writes", u.writes},
+                                 {"reads", u.reads},
+                                 {"differing", u.differing},
+                                 {"match", u.differing == 0}};
     }
     fj["chip_cycles"] = chip_cycles(f.render);
     fj["files"] = f.render.files;

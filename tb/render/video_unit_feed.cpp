@@ -56,6 +56,7 @@ std::vector<VideoUnitFrame> replay(const video::VideoMap& layout, const tb::RunR
     }
     b->front = static_cast<int>(out.f[UnitPorts::out_front]);
     b->shown = static_cast<int>(frames.size()) - 1;
+    b->by_unit = true;
     f.buffers = b;
     frames.emplace_back();
   }
