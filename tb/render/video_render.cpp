@@ -110,10 +110,9 @@ int render_video(const std::string& scene_path, const RenderOptions& o, FrameRan
         rep.units.back().refused = e.what();
         continue;
       }
-      const UnitRun& u = units.back()->run;
-      rep.units.push_back({u.items.size(), u.result.outputs.size(), units.back()->cycles_per_item,
-                           units.back()->check_level,
-                           units.back()->check ? units.back()->check->match() : true, ""});
+      const VideoUnitFeed& u = *units.back();
+      rep.units.push_back({u.items, u.cycles, u.cycles_per_item, u.check_level,
+                           u.check ? u.check->match() : true, ""});
       if (!rep.units.back().match) code = 1;
     }
   }
@@ -135,12 +134,11 @@ int render_video(const std::string& scene_path, const RenderOptions& o, FrameRan
         const VideoUnitFrame& u = units[i]->frames[static_cast<size_t>(f)];
         (*state)[videos[i]] = u.buffers;
         fr.unit.push_back(
-            {u.cycles, u.writes, u.reads, differing_cells(*u.buffers, *feeds[i].buffers()), true});
+            {u.cycles, u.writes, u.reads, differing_cells(*u.buffers, *feeds[i].buffers())});
         if (fr.unit.back().differing != 0) code = 1;
       } else {
         (*state)[videos[i]] = feeds[i].buffers();
-        fr.unit.push_back({});
-        fr.unit.back().by_unit = false;
+        fr.unit.push_back({});  // the golden path wrote the memory (rep.units[i].refused)
       }
       fr.shown.push_back((*state)[videos[i]]->shown);
       fr.front.push_back((*state)[videos[i]]->front);

@@ -43,7 +43,6 @@ struct VideoFrameReport {
   struct Unit {
     uint64_t cycles = 0, writes = 0, reads = 0;
     uint64_t differing = 0;  // cells of its two buffers (and the front) not the golden path's
-    bool by_unit = true;     // false: the unit did not run, the golden VideoMap wrote the memory
   };
   std::vector<Unit> unit;
   RenderReport render;

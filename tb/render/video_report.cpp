@@ -26,8 +26,8 @@ std::string verdict(const RenderReport& r) {
 }
 
 // "2731 writes =", or "2731 writes, 3 !=" (the unit's buffers against the golden path's cells).
-std::string unit_cell(const VideoFrameReport::Unit& u) {
-  if (!u.by_unit) return "golden (host)";
+std::string unit_cell(const VideoFrameReport::Unit& u, bool by_unit) {
+  if (!by_unit) return "golden (host)";
   return u.differing ? fmt::format("{} writes, {} !=", u.writes, u.differing)
                      : fmt::format("{} writes =", u.writes);
 }
@@ -72,12 +72,12 @@ std::string VideoRenderReport::text() const {
   for (const VideoFrameReport& f : frames) {
     for (size_t i = 0; i < f.feeds.size(); ++i) {
       const VideoFrameFeed& v = f.feeds[i];
-      s += fmt::format(kRow, f.frame, videos[i].substr(0, videos[i].find(':')), f.shown[i],
-                       f.front[i], v.begin_cycle, v.end_cycle, v.swap_cycle, v.cycles,
-                       v.sampler_lost,
-                       fmt::format("{:.3f}", percent(v.sampler_lost, v.sampler_wanted)),
-                       v.write_accesses, v.read_accesses, unit_cell(f.unit[i]),
-                       i == 0 ? chip_cycles(f.render) : 0, i == 0 ? verdict(f.render) : "");
+      s += fmt::format(
+          kRow, f.frame, videos[i].substr(0, videos[i].find(':')), f.shown[i], f.front[i],
+          v.begin_cycle, v.end_cycle, v.swap_cycle, v.cycles, v.sampler_lost,
+          fmt::format("{:.3f}", percent(v.sampler_lost, v.sampler_wanted)), v.write_accesses,
+          v.read_accesses, unit_cell(f.unit[i], units[i].refused.empty()),
+          i == 0 ? chip_cycles(f.render) : 0, i == 0 ? verdict(f.render) : "");
     }
   }
   s += fmt::format(
@@ -188,7 +188,7 @@ std::string VideoRenderReport::json() const {
     }
     for (size_t i = 0; i < f.unit.size(); ++i) {
       const VideoFrameReport::Unit& u = f.unit[i];
-      fj["videos"][i]["unit"] = {{"engine", u.by_unit ? engine : "golden (host)"},
+      fj["videos"][i]["unit"] = {{"engine", units[i].refused.empty() ? engine : "golden (host)"},
                                  {"cycles", u.cycles},
                                  {"writes", u.writes},
                                  {"reads", u.reads},

@@ -73,27 +73,35 @@ VideoUnitFeed feed_video_unit(const host::Video& v, uint32_t base, int last, Lev
   std::vector<std::vector<video::VideoItem>> frames;
   for (int k = 0; k <= last; ++k)
     frames.push_back(video::frame_items(config.format, video_frame(v, k)));
-  VideoUnitFeed feed;
-  feed.run.kind = "video_unit";
   const auto block = std::make_shared<tb::VideoUnitBlock>();
-  attach(feed.run, block);
+  const auto unit_run = [&block] {
+    UnitRun run;
+    run.kind = "video_unit";
+    attach(run, block);
+    return run;
+  };
+  UnitRun run = unit_run();
   tb::VideoUnitFeedItems items = tb::video_unit_feed_items(config, frames);
-  feed.run.items = std::move(items.items);
+  run.items = std::move(items.items);
+  run_unit(run, level, {});
+  VideoUnitFeed feed;
+  feed.items = run.items.size();
+  feed.cycles = run.result.outputs.size();
   feed.cycles_per_item = items.cycles_per_item;
-  run_unit(feed.run, level, {});
-  feed.frames = replay(layout, feed.run.result);
+  feed.frames = replay(layout, run.result);
   if (feed.frames.size() != frames.size()) {
     throw std::logic_error(
         fmt::format("video unit: {} swaps for {} frames", feed.frames.size(), frames.size()));
   }
-  if (check) {
-    UnitRun reference = feed.run;
+  if (check) {  // the same items at the reference level (moved there: they are large)
+    UnitRun reference = unit_run();
+    reference.items = std::move(run.items);
     run_unit(reference, *check, {});
     feed.check =
-        tb::compare(block->outputs(), reference.result, feed.run.result, block->request_schemas());
+        tb::compare(block->outputs(), reference.result, run.result, block->request_schemas());
     feed.check_level = engine_name(*check);
   }
-  return feed;
+  return feed;  // the runs' items and logs go: the buffers at each swap are what is kept
 }
 
 uint64_t differing_cells(const VideoBuffers& a, const VideoBuffers& b) {

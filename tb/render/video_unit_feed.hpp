@@ -31,7 +31,7 @@ struct VideoUnitFrame {
 
 struct VideoUnitFeed {
   std::vector<VideoUnitFrame> frames;   // video frames 0..last
-  UnitRun run;                          // the unit's run at the engine
+  size_t items = 0, cycles = 0;         // the unit's run: its items, its memory cycles
   int cycles_per_item = 1;              // the port's rate in its run: a texel in this many cycles
   std::optional<tb::Comparison> check;  // against the check level's run of the same items
   std::string check_level;

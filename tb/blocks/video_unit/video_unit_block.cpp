@@ -6,6 +6,7 @@
 #include <array>
 #include <stdexcept>
 
+#include "blocks/video_rows/video_rows_block.hpp"
 #include "blocks/video_unit/video_memory.hpp"
 #include "formats/formats.hpp"
 #include "harness/described_engines.hpp"
@@ -30,10 +31,9 @@ video::VideoMapConfig video_unit_config(const Txn& cfg) {
   c.format.planes = cfg.f[D::cfg_four_planes] != 0 ? fmts::kPlanes : 1;
   c.base = static_cast<uint32_t>(cfg.f[D::cfg_base0]);
   c.base1 = static_cast<uint32_t>(cfg.f[D::cfg_base1]);
-  c.arbiter.segment_cells = 8;
-  c.arbiter.buffers_per_bank = 8;
-  c.arbiter.max_wait = static_cast<uint32_t>(cfg.f[D::cfg_max_wait]);
-  c.arbiter.read_wait = static_cast<uint32_t>(cfg.f[D::cfg_read_wait]);
+  // The unit's rows are the video_rows block's (tmu_video_rows at its defaults).
+  c.arbiter = video_rows_config(static_cast<uint32_t>(cfg.f[D::cfg_max_wait]),
+                                static_cast<uint32_t>(cfg.f[D::cfg_read_wait]));
   return c;
 }
 
