@@ -416,11 +416,14 @@ tmu_mutant(video_rows unreset FILE texram/tmu_video_rows.sv EXPECT x-leak
 # TEXRAM video unit (000 §11-12; golden/texram/video/video_unit.hpp at 8-cell rows and 8 buffers a
 # bank, docs/video.md): the port, a mipmap generator per plane and the row buffers into the memory.
 tmu_block(video_unit)
+# ... and at the chip's rows of a page (512 cells, a row's access 64 words on the memory port):
+# docs/video.md's figure from the RTL (--video-workload).
+tmu_block(video_unit VARIANT page OPTIONS "--video-cells 512" ARGS -GCells=512)
 tmu_mutant(video_unit early_swap FILE texram/tmu_video_unit.sv
   FROM "assign swap_now    = pending_q && o_drained;" TO "assign swap_now    = pending_q;"
   WHY "the front buffer swapped at the frame's end, before its last rows reach the memory: the sampler reads a torn frame")
 tmu_mutant(video_unit read_memory_only FILE texram/tmu_video_unit.sv
-  FROM "assign cap_value   = o_mask[cap_q] ? o_data[8*cap_q +: 8] : resp_q[8*cap_q +: 8];" TO "assign cap_value   = resp_q[8*cap_q +: 8];"
+  FROM "assign cap_value   = o_mask[cap_q] ? o_data[8*cap_q +: 8] : resp_q[8*cap_q[2:0] +: 8];" TO "assign cap_value   = resp_q[8*cap_q[2:0] +: 8];"
   WHY "the line above read from the memory only: cells still in a row buffer come back stale")
 tmu_mutant(video_unit one_line FILE texram/tmu_video_unit.sv
   FROM "assign above_slot = r_y[1] ^ !r_y[0];" TO "assign above_slot = 1'b0;"
@@ -431,6 +434,9 @@ tmu_mutant(video_unit front_buffer FILE texram/tmu_video_unit.sv
 tmu_mutant(video_unit unreset FILE texram/tmu_video_unit.sv EXPECT x-leak
   FROM "      late_q     <= '0;\n" TO ""
   WHY "the late-read counter starts where its flops happen to be")
+tmu_mutant(video_unit one_word_read VARIANT page FILE texram/tmu_video_unit.sv
+  FROM "else if (cap_q[2:0] == 3'd7) state_d = StBeat;" TO ""
+  WHY "a read of a page row requests its first word only: the line above's later cells are taken from that word's response")
 
 # CCC decoder (000 §3, Fig. 5).
 tmu_block(ccc_decoder)

@@ -249,10 +249,13 @@ TEST(VideoRenderTest, RtlEqualsGoldenOnTheChipsEveryFrame) {
         EXPECT_GT(f.render.check->compared, 100u);
         EXPECT_GT(f.feeds[0].sampler_lost, 0u);
         EXPECT_EQ(f.feeds[0].sampler_lost, f.feeds[0].write_cycles + f.feeds[0].read_cycles);
-        // The video unit at rtl left both buffers as the golden path did; at 8-cell rows a frame
-        // takes at least a write for every 8 of its cells (4/3 cells a texel a plane).
+        // The video unit at rtl left both buffers as the golden path did, and, at the same
+        // rows of a page, made its accesses: a write a (bank, row) the frame touches, whatever
+        // the rate, and the reads of the lines above.
         EXPECT_EQ(f.unit[0].differing, 0u);
-        EXPECT_GE(f.unit[0].writes, 64u * 64u * 4u / 3u * static_cast<uint64_t>(planes) / 8u);
+        EXPECT_EQ(f.unit[0].writes, f.feeds[0].write_accesses);
+        EXPECT_EQ(f.unit[0].reads, f.feeds[0].read_accesses);
+        EXPECT_GT(f.unit[0].writes, 0u);
         if (interlaced) {
           EXPECT_GT(f.unit[0].reads, 0u);
         }
@@ -265,28 +268,6 @@ TEST(VideoRenderTest, RtlEqualsGoldenOnTheChipsEveryFrame) {
       EXPECT_TRUE(rep.units[0].match);  // the unit's rtl run = its golden run, bit for bit
     }
   }
-  fs::remove_all(dir);
-}
-
-// A format the co-simulated unit cannot take (an interlaced 256 x 256 four-plane video: a line
-// of 1 KiB needs 128 row reads at 8-cell rows, more than its read queue of 64) still renders: the
-// golden VideoMap writes the chip's memory, the report says why the unit did not run and names the
-// stream as host work; the chip is rtl = golden.
-TEST(VideoRenderTest, AFormatTheUnitCannotTakeIsWrittenByTheGoldenPath) {
-  const fs::path dir = temp_dir("fallback");
-  const fs::path scene = write_scene(dir, generated(true, 4, 1, 256));
-  const RenderOptions o = checked_on_a_chip(Level::kRtl, dir / "out");
-  std::ostringstream log;
-  VideoRenderReport rep;
-  EXPECT_EQ(render_video(scene.string(), o, {0, 0}, log, &rep), 0) << log.str();
-  ASSERT_EQ(rep.units.size(), 1u);
-  EXPECT_NE(rep.units[0].refused.find("reads of the line above"), std::string::npos);
-  ASSERT_EQ(rep.frames.size(), 1u);
-  EXPECT_EQ(rep.frames[0].unit[0].writes, 0u);  // the unit wrote nothing: the golden path did
-  EXPECT_EQ(rep.frames[0].shown[0], 0);
-  EXPECT_TRUE(rep.match());
-  EXPECT_NE(log.str().find("video stream of screen"), std::string::npos);
-  EXPECT_NE(log.str().find("not run"), std::string::npos);
   fs::remove_all(dir);
 }
 
@@ -353,7 +334,7 @@ TEST(VideoRenderTest, AVideoWithADetailMap) {
 }
 
 // The unit's comparison with the golden path can fail: one cell of a buffer changed is one cell
-// that differs, and so is the other buffer in front.
+// that differs, and so is the other buffer in front; other row accesses fail the report.
 TEST(VideoRenderTest, TheUnitAgainstTheGoldenPathCatchesABrokenBuffer) {
   host::Video v;
   v.pattern = "rings";
@@ -376,6 +357,13 @@ TEST(VideoRenderTest, TheUnitAgainstTheGoldenPathCatchesABrokenBuffer) {
   EXPECT_EQ(differing_cells(*unit.frames[0].buffers, *broken), 1u);
   broken->front = 1 - broken->front;
   EXPECT_EQ(differing_cells(*unit.frames[0].buffers, *broken), 2u);
+  // Equal buffers from other row accesses than the golden path's fail the render too.
+  VideoRenderReport rep;
+  rep.frames.emplace_back().unit.push_back({unit.frames[0].cycles, unit.frames[0].writes, 0, 0,
+                                            /*same_accesses=*/true});
+  EXPECT_TRUE(rep.match());
+  rep.frames[0].unit[0].same_accesses = false;
+  EXPECT_FALSE(rep.match());
 }
 
 TEST(VideoRenderTest, AnInjectedFaultIsCaughtOnEveryFrame) {

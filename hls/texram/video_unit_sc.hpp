@@ -1,10 +1,11 @@
 // SystemC model of the TEXRAM's video unit (000 §11-12), the same ports and handshakes as
 // rtl/texram/tmu_video_unit.sv. Its port, generators, row buffers, reads of the line above and
-// swaps are the golden model's (texram::video::VideoUnit at 8-cell rows, 8 buffers a bank); the
-// module adds the clocking and the memory: one clocked thread that takes an in item in one
-// clock, and a cycle item (one memory cycle) when its two-entry output FIFO has room, with a
-// registered ready. The cycle's access goes out on mem_req for one clock; after a read the
-// thread takes no item until the row's cells come back on mem_resp, which it hands to the golden
+// swaps are the golden model's (texram::video::VideoUnit at rows of `cells`, 8 or 512, 8 buffers
+// a bank); the module adds the clocking and the memory: one clocked thread that takes an in item
+// in one clock, and a cycle item (one memory cycle) when its two-entry output FIFO has room, with
+// a registered ready. The cycle's access goes out on mem_req as the row's 8-cell words, one a
+// clock; a read's next word goes when the last one's cells are back on mem_resp. The thread
+// takes no item until the access is out and a read's row is back, which it hands to the golden
 // model (external_reads). cfg_* are read at every clock: a new format or new bases start a new
 // video map, new bounds take effect at the next cycle.
 #pragma once
@@ -28,13 +29,15 @@ class VideoUnitSc : public sc_core::sc_module {
   TMU_SC_PORTS(video_unit)
 
   SC_HAS_PROCESS(VideoUnitSc);
-  explicit VideoUnitSc(sc_core::sc_module_name name) : sc_core::sc_module(name) {
+  VideoUnitSc(sc_core::sc_module_name name, uint32_t cells)
+      : sc_core::sc_module(name), cells_(cells) {
     SC_CTHREAD(run, clk_i.pos());
     reset_signal_is(rst_ni, false);
   }
 
  private:
-  static constexpr uint32_t kCells = 8;
+  static constexpr uint32_t kWordCells = 8;  // the memory port's word
+  const uint32_t cells_;
   using Unit = texram::video::VideoUnit;
   using Access = texram::video::RowBuffers::Access;
 
@@ -73,7 +76,7 @@ class VideoUnitSc : public sc_core::sc_module {
     c.format.planes = cfg_four_planes_i.read() != 0 ? formats::kPlanes : 1;
     c.base = static_cast<uint32_t>(cfg_base0_i.read());
     c.base1 = static_cast<uint32_t>(cfg_base1_i.read());
-    c.arbiter.segment_cells = kCells;
+    c.arbiter.segment_cells = cells_;
     c.arbiter.buffers_per_bank = 8;
     c.arbiter.max_wait = static_cast<uint32_t>(cfg_max_wait_i.read());
     c.arbiter.read_wait = static_cast<uint32_t>(cfg_read_wait_i.read());
@@ -81,20 +84,20 @@ class VideoUnitSc : public sc_core::sc_module {
     return c;
   }
 
-  // The access on the memory port for one clock.
-  void request(const Access& a) {
+  // Word w of the access on the memory port for one clock.
+  void request(const Access& a, uint32_t w) {
     uint32_t mask = 0;
     uint64_t data = 0;
     if (a.kind == Access::Kind::kWrite) {
-      for (uint32_t i = 0; i < kCells; ++i) {
-        mask |= uint32_t{a.mask[i]} << i;
-        data |= uint64_t{a.data[i]} << (8 * i);
+      for (uint32_t i = 0; i < kWordCells; ++i) {
+        mask |= uint32_t{a.mask[w + i]} << i;
+        data |= uint64_t{a.data[w + i]} << (8 * i);
       }
     }
     mem_req_valid_o.write(true);
     mem_req_write_o.write(a.kind == Access::Kind::kWrite);
     mem_req_bank_o.write(a.bank);
-    mem_req_addr_o.write(a.segment * kCells);
+    mem_req_addr_o.write(a.segment * cells_ + w);
     mem_req_mask_o.write(mask);
     mem_req_data_o.write(data);
   }
@@ -102,7 +105,10 @@ class VideoUnitSc : public sc_core::sc_module {
   void run() {
     Unit unit;
     SmallFifo<Out, 2> out;
-    bool awaiting = false;  // a read's cells are awaited on mem_resp
+    Access access;                // the cycle's access, its words going out
+    uint32_t next_word = cells_;  // its first cell not yet requested (cells_: none left)
+    bool awaiting = false;        // a read's word is awaited on mem_resp
+    std::vector<uint8_t> row;     // a read's cells so far
     // Not ready in reset: the edge that leaves reset is spent here.
     in_ready_o.write(false);
     cycle_ready_o.write(false);
@@ -111,8 +117,9 @@ class VideoUnitSc : public sc_core::sc_module {
     write_stats(unit);
     wait();
     while (true) {
-      in_ready_o.write(!awaiting && unit.configured());
-      cycle_ready_o.write(!awaiting && unit.configured() && out.size() <= 1);
+      const bool busy = awaiting || next_word < cells_;
+      in_ready_o.write(!busy && unit.configured());
+      cycle_ready_o.write(!busy && unit.configured() && out.size() <= 1);
       show(out.empty() ? nullptr : &out.front());
       write_stats(unit);
       wait();
@@ -121,11 +128,10 @@ class VideoUnitSc : public sc_core::sc_module {
       if (out_valid_o.read() && out_ready_i.read()) out.pop();
       if (awaiting && mem_resp_valid_i.read()) {
         const auto data = mem_resp_data_i.read();
-        std::vector<uint8_t> cells(kCells);
-        for (uint32_t i = 0; i < kCells; ++i) {
-          cells[i] = static_cast<uint8_t>(data.range(8 * i + 7, 8 * i).to_uint());
+        for (uint32_t i = 0; i < kWordCells; ++i) {
+          row.push_back(static_cast<uint8_t>(data.range(8 * i + 7, 8 * i).to_uint()));
         }
-        unit.map().capture(cells);
+        if (row.size() == cells_) unit.map().capture(row);
         awaiting = false;
       }
       try {
@@ -148,10 +154,16 @@ class VideoUnitSc : public sc_core::sc_module {
           o.read = a.kind == Access::Kind::kRead;
           o.fault = a.fault;
           o.wait = static_cast<uint32_t>(std::min<uint64_t>(a.wait, 0xFFFF));
-          request(a);
-          awaiting = o.read;
+          access = a;
+          next_word = 0;
+          row.clear();
         }
         out.push(o);
+      }
+      if (!awaiting && next_word < cells_) {
+        request(access, next_word);
+        next_word += kWordCells;
+        awaiting = access.kind == Access::Kind::kRead;
       }
     }
   }

@@ -261,7 +261,9 @@ module tmu_video_rows #(
   assign granted  = busy_now == '0 && sampler;
 
   // A read's data take the cells a row buffer still holds: per cell, the newest buffer of the
-  // bank holding that row's cell (highest tag, then the last), as golden's newest_holding.
+  // bank holding that row's cell (highest tag, then the last), as golden's newest_holding. Only
+  // a pending read is looked at (rd_go needs one): the condition spares the simulation the
+  // search at every clock; the logic is the same.
   logic [Cells-1:0]   rd_mask;
   logic [8*Cells-1:0] rd_data;
   logic [TagW-1:0]    rd_best [Cells];
@@ -271,15 +273,17 @@ module tmu_video_rows #(
     rd_mask = '0;
     rd_data = '0;
     rd_id   = '0;
-    for (int c = 0; c < Cells; c++) begin
-      rd_best[c] = '0;
-      for (int j = 0; j < Buffers; j++) begin
-        rd_id = (IdW'(rd_bank_q[0]) << SelW) + IdW'(j);
-        if (st_q[rd_id] != Free && seg_q[rd_id] == rd_seg_q[0] && valid_q[rd_id][c] &&
-            (!rd_mask[c] || tag_q[rd_id] >= rd_best[c])) begin
-          rd_mask[c]        = 1'b1;
-          rd_best[c]        = tag_q[rd_id];
-          rd_data[8*c +: 8] = data_q[rd_id][8*c +: 8];
+    for (int c = 0; c < Cells; c++) rd_best[c] = '0;
+    if (rd_n_q != '0) begin
+      for (int c = 0; c < Cells; c++) begin
+        for (int j = 0; j < Buffers; j++) begin
+          rd_id = (IdW'(rd_bank_q[0]) << SelW) + IdW'(j);
+          if (st_q[rd_id] != Free && seg_q[rd_id] == rd_seg_q[0] && valid_q[rd_id][c] &&
+              (!rd_mask[c] || tag_q[rd_id] >= rd_best[c])) begin
+            rd_mask[c]        = 1'b1;
+            rd_best[c]        = tag_q[rd_id];
+            rd_data[8*c +: 8] = data_q[rd_id][8*c +: 8];
+          end
         end
       end
     end
@@ -444,9 +448,16 @@ module tmu_video_rows #(
       out_bank_o    <= start ? acc_bank : '0;
       out_addr_o    <= start ? {acc_seg, {CellBits{1'b0}}} : '0;
       out_mask_o    <= wr_go ? valid_q[wr_id] : (rd_go ? rd_mask : '0);
-      for (int c = 0; c < Cells; c++) begin
-        out_data_o[8*c +: 8] <= (wr_go && valid_q[wr_id][c]) ? data_q[wr_id][8*c +: 8] :
-                                (rd_go ? rd_data[8*c +: 8] : 8'h00);
+      // (Three branches rather than one expression per cell: the same logic, a cheaper
+      // simulation at rows of a page.)
+      if (wr_go) begin
+        for (int c = 0; c < Cells; c++) begin
+          out_data_o[8*c +: 8] <= valid_q[wr_id][c] ? data_q[wr_id][8*c +: 8] : 8'h00;
+        end
+      end else if (rd_go) begin
+        out_data_o <= rd_data;
+      end else begin
+        out_data_o <= '0;
       end
       out_drained_o <= drained;
       out_wait_o    <= rd_go ? rd_age_q[0] : (wr_go ? rq_age_q[wr_k[IdW-1:0]] : '0);

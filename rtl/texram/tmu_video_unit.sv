@@ -39,9 +39,10 @@
 ///   StEnd      the frame's last texel: its flush
 ///   StHold     ... and the barrier on it (when no swap is pending)
 ///   StDone     releases the port's output
-///   StAccess   the rows' output: the request on mem_req, the swap decision
-///   StResp     a read waits for its response (one per read, in order, latency >= 1)
-///   StCapture  the read's cells into the line store, one a clock
+///   StAccess   the rows' output: the request of its first word on mem_req, the swap decision
+///   StBeat     the request of a further word of the row (rows of more than 8 cells)
+///   StResp     a read waits for its word's response (one per request, in order, latency >= 1)
+///   StCapture  the word's cells into the line store, one a clock; then the next word's read
 ///   StUnhold   after a swap: the barrier lifted (hold 0xFFFF)
 ///   StShow     the out item, until taken
 ///
@@ -74,7 +75,9 @@
 /// others no line's. The last item (1, 3) flushes frame 1 and holds it; the cycle after which
 /// no buffer of frame 1 is left swaps: out swap 1, front 1.
 module tmu_video_unit #(
-  /// Cells of a row buffer (tmu_video_rows' Cells); the memory ports carry 8.
+  /// Cells of a row buffer (tmu_video_rows' Cells): 8 (the co-simulated block) to 512 (a page,
+  /// the chip's rows). The memory port carries 8 cells a clock, so a row's access goes out as
+  /// Cells / 8 requests of consecutive words (see mem_req).
   parameter int unsigned Cells     = 8,
   /// Row buffers of each bank.
   parameter int unsigned Buffers   = 8,
@@ -120,8 +123,10 @@ module tmu_video_unit #(
   output logic                  out_swap_o,
   output logic                  out_front_o,
 
-  /// The access of a cycle item, one clock (the memory takes every request): a write of the
-  /// row's masked cells, or a read of the row (mask and data 0).
+  /// The access of a cycle item (the memory takes every request): Cells / 8 requests, one a
+  /// clock, of the row's words in order, each 8 cells at addr, addr + 8, ...: a write of the
+  /// word's masked cells, or a read of the word (mask and data 0), whose response comes before
+  /// the next word's read goes.
   output logic                  mem_req_valid_o,
   output logic                  mem_req_write_o,
   output tmu_pkg::bank_t        mem_req_bank_o,
@@ -129,7 +134,7 @@ module tmu_video_unit #(
   output logic [7:0]            mem_req_mask_o,
   output logic [63:0]           mem_req_data_o,
 
-  /// A read's cells, cell i in bits [8i+7:8i].
+  /// A read's word, cell i in bits [8i+7:8i].
   input  logic                  mem_resp_valid_i,
   input  logic [63:0]           mem_resp_data_i,
 
@@ -161,8 +166,12 @@ module tmu_video_unit #(
   localparam int unsigned CfgW     = 2 * tmu_pkg::MipLog2W + 2 + 2 * AddrW;
   localparam int unsigned NLog2W   = 4;  // log2 of a line's cells in a bank, up to 9 + 2
 
-  if (Cells != 8) begin : gen_check
-    $error("tmu_video_unit: Cells must be 8 (the memory ports carry 8 cells)");
+  // A row's words on the memory port.
+  localparam int unsigned Beats    = Cells / 8;
+  localparam int unsigned BeatW    = (Beats > 1) ? $clog2(Beats) : 1;
+
+  if (Cells < 8 || Cells > (1 << tmu_pkg::PageLog2) || (Cells & (Cells - 1)) != 0) begin : gen_check
+    $error("tmu_video_unit: Cells must be a power of two, 8..512 (the memory ports carry 8 cells)");
   end
 
   typedef enum logic [3:0] {
@@ -177,6 +186,7 @@ module tmu_video_unit #(
     StHold,
     StDone,
     StAccess,
+    StBeat,
     StResp,
     StCapture,
     StUnhold,
@@ -200,7 +210,8 @@ module tmu_video_unit #(
   logic                 rb_q, rb_d;
   logic [1:0]           plane_q, plane_d;
   logic [CellBits-1:0]  cap_q, cap_d;
-  logic [63:0]          resp_q;              // a read's response
+  logic [BeatW-1:0]     beat_q, beat_d;      // StBeat: the word of the row on mem_req
+  logic [63:0]          resp_q;              // a read's response: a word
   tmu_pkg::stat_count_t shown_q, shown_d, overruns_q, overruns_d, late_q, late_d;
 
   // The FIFO of line reads, parallel to the rows' read queue: each read's line and buffer.
@@ -463,13 +474,16 @@ module tmu_video_unit #(
   assign out_swap_o  = swap_q;
   assign out_front_o = front_q;
 
-  assign mem_req_valid_o = state_q == StAccess && (o_write || o_read);
+  logic [BeatW-1:0] req_beat;  // the word on mem_req: 0 in StAccess
+
+  assign req_beat        = (state_q == StBeat) ? beat_q : '0;
+  assign mem_req_valid_o = (state_q == StAccess && (o_write || o_read)) || state_q == StBeat;
   assign mem_req_write_o = o_write;
   assign mem_req_bank_o  = o_bank;
-  assign mem_req_addr_o  = o_addr;
+  assign mem_req_addr_o  = o_addr | (AddrW'(req_beat) << 3);
   // A read's mask and data are the rows' buffered cells, for the capture, not the memory.
-  assign mem_req_mask_o  = o_write ? o_mask : '0;
-  assign mem_req_data_o  = o_write ? o_data : '0;
+  assign mem_req_mask_o  = o_write ? 8'(o_mask >> (8 * req_beat)) : '0;
+  assign mem_req_data_o  = o_write ? 64'(o_data >> (64 * req_beat)) : '0;
 
   // ---- The capture of a read's cell cap_q ------------------------------------------------------
 
@@ -485,7 +499,7 @@ module tmu_video_unit #(
   assign cap_in_line = !cap_rel[AddrW] && (cap_rel[AddrW-1:0] >> n_log2) == '0;
   assign cap_plane   = cfg_four_planes_i ? cap_rel[1:0] : 2'd0;
   assign cap_col     = cfg_four_planes_i ? cap_rel[ColW+1:2] : cap_rel[ColW-1:0];
-  assign cap_value   = o_mask[cap_q] ? o_data[8*cap_q +: 8] : resp_q[8*cap_q +: 8];
+  assign cap_value   = o_mask[cap_q] ? o_data[8*cap_q +: 8] : resp_q[8*cap_q[2:0] +: 8];
 
   // The store's write port: the sweep, a two-line frame's line 0, a captured cell.
   always_comb begin
@@ -545,6 +559,7 @@ module tmu_video_unit #(
     rb_d       = rb_q;
     plane_d    = plane_q;
     cap_d      = cap_q;
+    beat_d     = beat_q;
     shown_d    = shown_q;
     overruns_d = overruns_q;
     late_d     = late_q;
@@ -644,18 +659,27 @@ module tmu_video_unit #(
           front_d   = newest_q;
           shown_d   = shown_q + StatW'(1);
         end
+        cap_d  = '0;
+        beat_d = BeatW'(1);
         if (o_read) state_d = StResp;
+        else if (o_write && Beats > 1) state_d = StBeat;
         else if (swap_now) state_d = StUnhold;
         else state_d = StShow;
       end
+      StBeat: begin
+        beat_d = beat_q + BeatW'(1);
+        if (o_read) state_d = StResp;
+        else if (beat_q == BeatW'(Beats - 1) && swap_q) state_d = StUnhold;
+        else if (beat_q == BeatW'(Beats - 1)) state_d = StShow;
+      end
       StResp: begin
-        cap_d = '0;
         if (mem_resp_valid_i) state_d = StCapture;
       end
       StCapture: begin
         cap_d = cap_q + CellBits'(1);
         if (cap_q == '1 && swap_q) state_d = StUnhold;
         else if (cap_q == '1) state_d = StShow;
+        else if (cap_q[2:0] == 3'd7) state_d = StBeat;  // the next word's read
       end
       StUnhold: begin
         if (hold_ready) state_d = StShow;
@@ -710,6 +734,7 @@ module tmu_video_unit #(
     rb_q    <= rb_d;
     plane_q <= plane_d;
     cap_q   <= cap_d;
+    beat_q  <= beat_d;
     if (state_q == StResp && mem_resp_valid_i) resp_q <= mem_resp_data_i;
     if (rf_push) begin
       rf_line_q[rf_tail_q] <= read_line;
@@ -745,7 +770,7 @@ module tmu_video_unit #(
       close_pages |-> rows_cycle_ready);
   // The cycle item's output is there from StAccess until taken.
   a_access_held: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (state_q inside {StAccess, StResp, StCapture, StUnhold, StShow}) |-> o_valid);
+      (state_q inside {StAccess, StBeat, StResp, StCapture, StUnhold, StShow}) |-> o_valid);
 `endif
 
 endmodule

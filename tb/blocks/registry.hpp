@@ -65,6 +65,12 @@ struct BlockOptions {
   // and random rays).
   std::optional<int> vol_mode;
   std::string vol_rays;
+  // video_unit: the cells of a row buffer, 8 (the block) or 512 (a page, the chip's rows; the
+  // rtl variant "page"), and a figure's workload ("1p", "4p", "1i", "4i": two frames of a 512 x
+  // 512 video of one or four planes, progressive or interlaced, at 30 frames per second under a
+  // sampler that wants every cycle, docs/video.md; empty: the directed and random items).
+  uint32_t video_cells = 8;
+  std::string video_workload;
 };
 
 struct BlockInfo {

@@ -161,14 +161,9 @@ Pipeline::Pipeline(const host::Scene& scene, Level level, int chips, const Video
         note_host_work(
             {"video timing of " + mat.name + " at the scene's rate (000 §11-12)",
              "the chip's memory is what the video unit at the engine wrote "
-             "(render/video_unit_feed, 8-cell rows); the cycles at the video's rate and the "
-             "chip's 512-cell rows, in the video report, are the golden VideoMap's on the host, "
-             "whose buffers are compared with the unit's cell for cell (docs/video.md)"});
-      } else {
-        note_host_work({"video stream of " + mat.name + " (000 §11-12)",
-                        "the golden VideoMap on the host writes the chip's memory: the "
-                        "co-simulated video unit cannot take this format (the video report "
-                        "says why)"});
+             "(render/video_unit_feed, the chip's rows of a page); the cycles at the video's "
+             "rate, in the video report, are the golden VideoMap's on the host, whose buffers "
+             "and accesses are the unit's (docs/video.md)"});
       }
     } else {
       try {

@@ -90,9 +90,8 @@ int render_video(const std::string& scene_path, const RenderOptions& o, FrameRan
   // and DRF, which the VideoMap's swaps then write.
   int code = 0;
   std::vector<VideoFeed> feeds;
-  // Per video: the video unit at the engine over every frame, or none where the co-simulated unit
-  // cannot take the format (then the golden VideoMap writes the chip's memory, as host work).
-  std::vector<std::optional<VideoUnitFeed>> units;
+  // Per video: the video unit at the engine over every frame.
+  std::vector<VideoUnitFeed> units;
   {
     const Pipeline placed(scene, Level::kGolden, o.chips);
     for (size_t m : videos) {
@@ -104,15 +103,12 @@ int render_video(const std::string& scene_path, const RenderOptions& o, FrameRan
       try {
         units.push_back(
             feed_video_unit(*scene.materials[m].video, base, range.last, o.level, o.check));
-      } catch (const std::runtime_error& e) {  // a format the co-simulated unit cannot take
-        units.push_back(std::nullopt);
-        rep.units.push_back({});
-        rep.units.back().refused = e.what();
-        continue;
+      } catch (const std::runtime_error& e) {  // a format the unit cannot take (none of a scene's)
+        throw InputError(scene_path, "materials." + scene.materials[m].name + ".video", e.what());
       }
-      const VideoUnitFeed& u = *units.back();
-      rep.units.push_back({u.items, u.cycles, u.cycles_per_item, u.check_level,
-                           u.check ? u.check->match() : true, ""});
+      const VideoUnitFeed& u = units.back();
+      rep.units.push_back(
+          {u.items, u.cycles, u.cycles_per_item, u.check_level, u.check ? u.check->match() : true});
       if (!rep.units.back().match) code = 1;
     }
   }
@@ -130,16 +126,13 @@ int render_video(const std::string& scene_path, const RenderOptions& o, FrameRan
                          e.what());
       }
       // The chip samples what the video unit wrote; the golden path must have written the same.
-      if (units[i]) {
-        const VideoUnitFrame& u = units[i]->frames[static_cast<size_t>(f)];
-        (*state)[videos[i]] = u.buffers;
-        fr.unit.push_back(
-            {u.cycles, u.writes, u.reads, differing_cells(*u.buffers, *feeds[i].buffers())});
-        if (fr.unit.back().differing != 0) code = 1;
-      } else {
-        (*state)[videos[i]] = feeds[i].buffers();
-        fr.unit.push_back({});  // the golden path wrote the memory (rep.units[i].refused)
-      }
+      const VideoUnitFrame& u = units[i].frames[static_cast<size_t>(f)];
+      (*state)[videos[i]] = u.buffers;
+      const VideoFrameFeed& golden = fr.feeds.back();
+      fr.unit.push_back({u.cycles, u.writes, u.reads,
+                         differing_cells(*u.buffers, *feeds[i].buffers()),
+                         u.writes == golden.write_accesses && u.reads == golden.read_accesses});
+      if (fr.unit.back().differing != 0 || !fr.unit.back().same_accesses) code = 1;
       fr.shown.push_back((*state)[videos[i]]->shown);
       fr.front.push_back((*state)[videos[i]]->front);
     }

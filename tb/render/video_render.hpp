@@ -42,7 +42,8 @@ struct VideoFrameReport {
   // ... and what the video unit at the engine did for it
   struct Unit {
     uint64_t cycles = 0, writes = 0, reads = 0;
-    uint64_t differing = 0;  // cells of its two buffers (and the front) not the golden path's
+    uint64_t differing = 0;     // cells of its two buffers (and the front) not the golden path's
+    bool same_accesses = true;  // its row writes and reads are the golden path's (same rows)
   };
   std::vector<Unit> unit;
   RenderReport render;
@@ -59,10 +60,6 @@ struct VideoRenderReport {
     int cycles_per_item = 1;       // the port's rate: a texel in this many cycles
     std::string against;           // the check's reference level ("" unchecked)
     bool match = true;             // its outputs, requests and counters equal the reference's
-    // Why the co-simulated unit did not run (a format it cannot take: an interlaced line whose
-    // reads overflow its queue), or empty. Then the golden VideoMap writes the chip's memory, and
-    // the report names it as host work.
-    std::string refused;
   };
   std::vector<UnitRunReport> units;  // per video material
   std::vector<VideoFrameReport> frames;

@@ -14,8 +14,11 @@ namespace {
 
 using UnitPorts = tb::desc::video_unit;
 
-// The unit's run replayed: its writes into the banks, the buffers snapshotted at each swap.
+// The unit's run replayed: its writes into the banks (an access: a row's words, one request
+// each), the buffers snapshotted at each swap.
 std::vector<VideoUnitFrame> replay(const video::VideoMap& layout, const tb::RunResult& run) {
+  constexpr uint32_t kWordCells = 8;
+  const uint32_t words = layout.config().arbiter.segment_cells / kWordCells;
   const uint32_t cells = layout.geometry().bank_cells();
   texram::BankImage memory;
   const uint32_t end = std::max(layout.buffer_base(0), layout.buffer_base(1)) + cells + 8;
@@ -28,17 +31,18 @@ std::vector<VideoUnitFrame> replay(const video::VideoMap& layout, const tb::RunR
     VideoUnitFrame& f = frames.back();
     ++f.cycles;
     if (out.f[UnitPorts::out_write] != 0 || out.f[UnitPorts::out_read] != 0) {
-      if (r >= requests.size()) throw std::logic_error("video unit: an access without a request");
-      const tb::Txn& q = requests[r++];
-      if (q.f[UnitPorts::mem_req_write] != 0) {
-        ++f.writes;
-        for (uint32_t i = 0; i < 8; ++i) {
+      if (r + words > requests.size()) {
+        throw std::logic_error("video unit: an access without its requests");
+      }
+      ++(out.f[UnitPorts::out_write] != 0 ? f.writes : f.reads);
+      for (uint32_t w = 0; w < words; ++w) {
+        const tb::Txn& q = requests[r++];
+        if (q.f[UnitPorts::mem_req_write] == 0) continue;
+        for (uint32_t i = 0; i < kWordCells; ++i) {
           if (q.f[UnitPorts::mem_req_mask + i] == 0) continue;
           memory.at(q.f[UnitPorts::mem_req_bank]).at(q.f[UnitPorts::mem_req_addr] + i) =
               static_cast<uint8_t>(q.f[UnitPorts::mem_req_data + i]);
         }
-      } else {
-        ++f.reads;
       }
     }
     if (out.f[UnitPorts::out_swap] == 0) continue;
@@ -68,12 +72,15 @@ std::vector<VideoUnitFrame> replay(const video::VideoMap& layout, const tb::RunR
 
 VideoUnitFeed feed_video_unit(const host::Video& v, uint32_t base, int last, Level level,
                               std::optional<Level> check) {
+  // The chip's unit: rows of a page (the configuration's default, as the golden VideoFeed's).
   video::VideoMapConfig config{video_format(v), base, 1, {}};
   const video::VideoMap layout(config);  // where the buffers are
   std::vector<std::vector<video::VideoItem>> frames;
   for (int k = 0; k <= last; ++k)
     frames.push_back(video::frame_items(config.format, video_frame(v, k)));
-  const auto block = std::make_shared<tb::VideoUnitBlock>();
+  tb::BlockOptions options;
+  options.video_cells = config.arbiter.segment_cells;
+  const auto block = std::make_shared<tb::VideoUnitBlock>(options);
   const auto unit_run = [&block] {
     UnitRun run;
     run.kind = "video_unit";

@@ -1,12 +1,12 @@
 // The video unit (tb/blocks/video_unit; rtl/texram/tmu_video_unit.sv) at the render's engine
 // writes a scene's video into the chip's memory (000 §11-12, docs/video.md "Rendering a video"):
-// the source's frames as the port's items, a texel every cycle or every few where the unit's
-// 8-cell rows need it (tb::video_unit_feed_items; the sampler leaves the memory to the unit, as
-// the render's pixel pass runs between two frames' feeds), each frame until it is swapped in;
-// the unit's memory requests
-// (its row writes) replayed into the two buffers, as they stand at each swap, are what the chip
-// samples. At the scene's rate (64 x 64 at 30 fps: a texel every 271 cycles) a frame would take
-// a million cycles more of nothing: the cells and the swap are the same at any rate the memory
+// the unit at the chip's rows of a page (rtl variant "page"), the source's frames as the port's
+// items, a texel every cycle or every few where the rows need it (tb::video_unit_feed_items; the
+// sampler leaves the memory to the unit, as the render's pixel pass runs between two frames'
+// feeds), each frame until it is swapped in; the unit's memory requests (its row writes, a
+// row's 8-cell words) replayed into the two buffers, as they stand at each swap, are what the
+// chip samples. At the scene's rate (64 x 64 at 30 fps: a texel every 271 cycles) a frame would
+// take a million cycles more of nothing: the cells and the swap are the same at any rate the memory
 // keeps up with, and the scene rate's timing is the golden VideoFeed's (render/video_feed).
 #pragma once
 

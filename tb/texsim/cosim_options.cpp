@@ -181,6 +181,21 @@ std::shared_ptr<CosimArgs> add_cosim_options(CLI::App& app) {
                   "oblique")
       ->check(CLI::IsMember({"z", "x", "oblique"}));
 
+  auto* video = cmd->add_option_group("video_unit", "video_unit: the rows and a figure's workload");
+  video
+      ->add_option("--video-cells", args->block_options.video_cells,
+                   "cells of a row buffer: 8 (the block's short rows) or 512 (a page, the chip's "
+                   "rows; rtl variant page)")
+      ->check(CLI::IsMember({8, 512}))
+      ->capture_default_str();
+  video
+      ->add_option("--video-workload", args->block_options.video_workload,
+                   "instead of the directed and random items, two frames of a 512 x 512 video "
+                   "at 30 frames per second, the sampler wanting every cycle, L = 64 "
+                   "(docs/video.md's figure): 1p | 4p | 1i | 4i (planes, progressive or "
+                   "interlaced)")
+      ->check(CLI::IsMember({"1p", "4p", "1i", "4i"}));
+
   return args;
 }
 

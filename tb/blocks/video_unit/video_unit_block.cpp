@@ -23,7 +23,7 @@ namespace fmts = tmu::formats;
 namespace video = texram::video;
 using D = desc::video_unit;
 
-video::VideoMapConfig video_unit_config(const Txn& cfg) {
+video::VideoMapConfig video_unit_config(const Txn& cfg, uint32_t cells) {
   video::VideoMapConfig c;
   c.format.log2_w = static_cast<int>(cfg.f[D::cfg_log2_w]);
   c.format.log2_h = static_cast<int>(cfg.f[D::cfg_log2_h]);
@@ -34,12 +34,13 @@ video::VideoMapConfig video_unit_config(const Txn& cfg) {
   // The unit's rows are the video_rows block's (tmu_video_rows at its defaults).
   c.arbiter = video_rows_config(static_cast<uint32_t>(cfg.f[D::cfg_max_wait]),
                                 static_cast<uint32_t>(cfg.f[D::cfg_read_wait]));
+  c.arbiter.segment_cells = cells;
   return c;
 }
 
 namespace {
 
-constexpr uint32_t kCells = 8;
+constexpr uint32_t kWordCells = 8;     // the memory port's word
 constexpr uint64_t kWaitMax = 0xFFFF;  // the RTL's waits saturate at 16 bits
 
 video::VideoItem item_of(const Txn& t) {
@@ -57,8 +58,10 @@ Txn cycle_item(bool sampler) { return channel_item(D::table(), "cycle", {sampler
 // stimulus, which keeps the read queue within the unit's, and the coverage) steps.
 class Unit {
  public:
+  explicit Unit(uint32_t cells) : cells_(cells) {}
+
   void configure(const Txn& cfg) {
-    const video::VideoMapConfig c = video_unit_config(cfg);
+    const video::VideoMapConfig c = video_unit_config(cfg, cells_);
     if (c.format.log2_w > kVideoUnitMaxLog2 || c.format.log2_h > kVideoUnitMaxLog2) {
       throw std::runtime_error(fmt::format("video_unit: a {} x {} format, beyond the unit's {}",
                                            c.format.width(), c.format.height(),
@@ -71,9 +74,9 @@ class Unit {
     }
   }
 
-  // One stimulus item; a cycle item's output in *out and its memory request, if it makes one,
-  // in *req (returns whether it does).
-  bool step(const Txn& item, Txn* out, Txn* req) {
+  // One stimulus item; a cycle item's output in *out and its access's memory requests, a row's
+  // words in order (rows of 8 cells: one), in *reqs, if reqs is given.
+  void step(const Txn& item, Txn* out, std::vector<Txn>* reqs = nullptr) {
     if (!unit_.configured()) {
       throw std::runtime_error("video_unit: an item before the first configuration");
     }
@@ -84,7 +87,7 @@ class Unit {
             "video_unit: {} reads of the line above pending, more than the unit's queue of {}",
             map().row_buffers().reads_pending(), kVideoUnitReadQueue));
       }
-      return false;
+      return;
     }
     const bool granted = unit_.cycle(item.f[D::cycle_sampler] != 0);
     using Kind = video::RowBuffers::Access::Kind;
@@ -93,22 +96,25 @@ class Unit {
     out->f[D::out_granted] = granted;
     out->f[D::out_swap] = map().swapped();
     out->f[D::out_front] = static_cast<uint64_t>(map().front_buffer());
-    if (a.kind == Kind::kNone) return false;
+    if (a.kind == Kind::kNone) return;
     out->f[D::out_write] = a.kind == Kind::kWrite;
     out->f[D::out_read] = a.kind == Kind::kRead;
     out->f[D::out_fault] = a.fault;
     out->f[D::out_wait] = std::min(a.wait, kWaitMax);
-    *req = Txn{};
-    req->f[D::mem_req_write] = a.kind == Kind::kWrite;
-    req->f[D::mem_req_bank] = a.bank;
-    req->f[D::mem_req_addr] = a.segment * kCells;
-    if (a.kind == Kind::kWrite) {
-      for (uint32_t i = 0; i < kCells; ++i) {
-        req->f[D::mem_req_mask + i] = a.mask[i];
-        req->f[D::mem_req_data + i] = a.data[i];
+    if (reqs == nullptr) return;
+    reqs->clear();
+    for (uint32_t w = 0; w < cells_; w += kWordCells) {
+      Txn& req = reqs->emplace_back();
+      req.f[D::mem_req_write] = a.kind == Kind::kWrite;
+      req.f[D::mem_req_bank] = a.bank;
+      req.f[D::mem_req_addr] = a.segment * cells_ + w;
+      if (a.kind == Kind::kWrite) {
+        for (uint32_t i = 0; i < kWordCells; ++i) {
+          req.f[D::mem_req_mask + i] = a.mask[w + i];
+          req.f[D::mem_req_data + i] = a.data[w + i];
+        }
       }
     }
-    return true;
   }
 
   const video::VideoMap& map() const { return unit_.map(); }
@@ -121,24 +127,30 @@ class Unit {
             {"lost_writes", c32(c.lost_writes)}, {"forced", c32(c.forced)}};
   }
 
+  uint32_t cells() const { return cells_; }
+
  private:
+  uint32_t cells_;
   video::VideoUnit unit_;
 };
 
 class Golden : public Model {
  public:
+  explicit Golden(uint32_t cells) : unit_(cells) {}
   void configure(const Txn& cfg) override { unit_.configure(cfg); }
   void step(const Txn& item, Sink& sink) override {
-    Txn out, req;
-    const bool request = unit_.step(item, &out, &req);
+    Txn out;
+    reqs_.clear();
+    unit_.step(item, &out, &reqs_);
     if (static_cast<int>(item.f[0]) != D::op_cycle) return;
-    if (request) sink.request(0, req);
+    for (const Txn& req : reqs_) sink.request(0, req);
     sink.output(out);
   }
   Counters counters() const override { return unit_.counters(); }
 
  private:
   Unit unit_;
+  std::vector<Txn> reqs_;
 };
 
 int uniform(std::mt19937_64& rng, int lo, int hi) {
@@ -169,14 +181,15 @@ struct FrameShape {
 // unit.
 class Stimulus {
  public:
-  explicit Stimulus(std::vector<Txn>& items, std::mt19937_64& rng) : items_(items), rng_(rng) {}
+  Stimulus(std::vector<Txn>& items, std::mt19937_64& rng, uint32_t cells)
+      : items_(items), rng_(rng), unit_(cells) {}
   void add(const Txn& t) {
     if (D::table().is_cfg(t)) {
       unit_.configure(t);
-      format_ = video_unit_config(t).format;
+      format_ = unit_.map().config().format;
     } else {
-      Txn out, req;
-      unit_.step(t, &out, &req);
+      Txn out;
+      unit_.step(t, &out);
     }
     items_.push_back(t);
   }
@@ -253,6 +266,7 @@ constexpr const char* kRead = "read of the line above";
 constexpr const char* kReadBuffered = "read takes a cell from a row buffer";
 constexpr const char* kForced = "access forced (the sampler loses)";
 constexpr const char* kGranted = "sampler granted";
+constexpr const char* kLostCycle = "sampler cycle lost (wanted, not granted)";
 constexpr const char* kSwap0 = "swap to buffer 0";
 constexpr const char* kSwap1 = "swap to buffer 1";
 constexpr const char* kDropped = "frame dropped (malformed)";
@@ -273,11 +287,15 @@ Txn video_unit_config_item(const video::VideoMapConfig& c) {
 
 VideoUnitFeedItems video_unit_feed_items(const video::VideoMapConfig& config,
                                          const std::vector<std::vector<video::VideoItem>>& frames) {
+  const uint32_t cells = config.arbiter.segment_cells;
+  if (cells != kVideoUnitCells && cells != kVideoUnitPageCells) {
+    throw std::invalid_argument(fmt::format("video_unit: rows of {} cells", cells));
+  }
   for (int rate = 1; rate <= 16; rate *= 2) {
     VideoUnitFeedItems feed;
     feed.cycles_per_item = rate;
     std::mt19937_64 rng(1);  // unused: the sampler wants no cycle
-    Stimulus s(feed.items, rng);
+    Stimulus s(feed.items, rng, cells);
     s.add(video_unit_config_item(config));
     bool whole = true;
     for (size_t k = 0; k < frames.size() && whole; ++k) {
@@ -295,6 +313,7 @@ VideoUnitFeedItems video_unit_feed_items(const video::VideoMapConfig& config,
 }
 
 struct VideoUnitBlock::CoverState {
+  explicit CoverState(uint32_t cells) : unit(cells) {}
   Unit unit;
   size_t next = 0;
   size_t maps = 0;
@@ -302,8 +321,17 @@ struct VideoUnitBlock::CoverState {
 
 VideoUnitBlock::VideoUnitBlock(const BlockOptions& options)
     : DescribedBlockOf(D::table()), options_(options) {
-  add_level("hls", hls_level<desc::video_unit_sc, hls::VideoUnitSc>());
+  if (options_.video_cells != kVideoUnitCells && options_.video_cells != kVideoUnitPageCells) {
+    throw std::invalid_argument(fmt::format("video_unit: rows of {} cells; the unit has {} or {}",
+                                            options_.video_cells, kVideoUnitCells,
+                                            kVideoUnitPageCells));
+  }
+  add_level("hls", hls_level<desc::video_unit_sc, hls::VideoUnitSc>(options_.video_cells));
   TMU_ADD_RTL_LEVELS(video_unit, variant());
+}
+
+std::string VideoUnitBlock::variant() const {
+  return options_.video_cells == kVideoUnitPageCells ? "page" : "";
 }
 
 std::vector<Txn> VideoUnitBlock::setup_items() const {
@@ -318,7 +346,7 @@ std::unique_ptr<Environment> VideoUnitBlock::environment(uint64_t seed) const {
 std::vector<Txn> VideoUnitBlock::directed_items() const {
   std::vector<Txn> items;
   std::mt19937_64 rng(options_.seed ^ 0x71DE'0000'0000'0003ull);
-  Stimulus s(items, rng);
+  Stimulus s(items, rng, options_.video_cells);
   const auto map = [&](video::VideoFormat f, uint32_t base0, uint32_t max_wait,
                        uint32_t read_wait) {
     s.configure(f, base0, default_base1(f, base0), max_wait, read_wait);
@@ -358,13 +386,59 @@ std::vector<Txn> VideoUnitBlock::directed_items() const {
   map({4, 4, false, 4}, 0, 64, 0);
   s.frame(0, {0, 1.0, FrameShape::Defect::kNone});
   s.drain();
+  if (options_.video_cells > 32) {
+    // Rows of a page hold that frame in a few rows a bank: 128 x 64 four planes at the longest
+    // bound L = 0xFFFF fill more than 8 rows a bank before any may be written.
+    map({7, 6, false, 4}, 0, 0xFFFF, 0);
+    s.frame(0, {0, 1.0, FrameShape::Defect::kNone});
+    s.drain();
+  }
   items.push_back(setup_items().front());  // the random items go on in the setup's map
   return items;
 }
 
-std::vector<Txn> VideoUnitBlock::random_items(std::mt19937_64& rng, size_t count) const {
+// The figure's workload (BlockOptions::video_workload) as video::run feeds it in
+// VideoFigureTest: two frames of a 512 x 512 video at 30 frames per second, an item arriving
+// in the cycle the rate's accumulator passes a whole texel, the sampler wanting every cycle,
+// L = 64, then cycles until the last frame is swapped in and every row is written.
+std::vector<Txn> VideoUnitBlock::workload_items() const {
+  const std::string& w = options_.video_workload;
+  const video::VideoFormat f{9, 9, w[1] == 'i', w[0] == '4' ? fmts::kPlanes : 1};
   std::vector<Txn> items;
-  Stimulus s(items, rng);
+  std::mt19937_64 rng(1);  // unused: the sampler wants every cycle
+  Stimulus s(items, rng, options_.video_cells);
+  s.configure(f, 0, default_base1(f, 0), 64, 0);
+  const video::VideoRate rate = video::video_rate(512, 512, 30);
+  std::vector<video::VideoItem> stream;
+  for (uint32_t k = 0; k < 2; ++k) {
+    const std::vector<video::VideoItem> v = video::frame_items(f, video::test_frame(f, k));
+    stream.insert(stream.end(), v.begin(), v.end());
+  }
+  uint64_t acc = 0;
+  for (size_t i = 0; i < stream.size();) {
+    for (acc += rate.num; acc >= rate.den && i < stream.size(); acc -= rate.den) {
+      s.add(in_item(stream[i++]));
+    }
+    s.add(cycle_item(true));
+  }
+  while (s.unit().map().swap_pending() || !s.unit().map().row_buffers().idle()) {
+    s.add(cycle_item(true));
+  }
+  return items;
+}
+
+std::string VideoUnitBlock::repro_options() const {
+  std::string out = DescribedBlock::repro_options();
+  if (!options_.video_workload.empty()) {
+    out += (out.empty() ? "" : " ") + std::string("--video-workload ") + options_.video_workload;
+  }
+  return out;
+}
+
+std::vector<Txn> VideoUnitBlock::random_items(std::mt19937_64& rng, size_t count) const {
+  if (!options_.video_workload.empty()) return workload_items();
+  std::vector<Txn> items;
+  Stimulus s(items, rng, options_.video_cells);
   s.add(setup_items().front());
   uint32_t k = 0;
   while (items.size() < count) {
@@ -391,17 +465,20 @@ std::vector<Txn> VideoUnitBlock::random_items(std::mt19937_64& rng, size_t count
   return items;
 }
 
-std::unique_ptr<Model> VideoUnitBlock::golden() const { return std::make_unique<Golden>(); }
+std::unique_ptr<Model> VideoUnitBlock::golden() const {
+  return std::make_unique<Golden>(options_.video_cells);
+}
 
 std::vector<std::string> VideoUnitBlock::coverage_cases() const {
-  return {kWrite,   kWriteFault, kRead, kReadBuffered, kForced,  kGranted,    kSwap0,      kSwap1,
-          kDropped, kOverrun,    kLate, kLost,         kTwoLine, kFourPlanes, kInterlaced, kNewMap};
+  return {kWrite,     kWriteFault, kRead,       kReadBuffered, kForced,  kGranted,
+          kLostCycle, kSwap0,      kSwap1,      kDropped,      kOverrun, kLate,
+          kLost,      kTwoLine,    kFourPlanes, kInterlaced,   kNewMap};
 }
 
 void VideoUnitBlock::cover(const std::vector<Txn>& items, size_t index, const Txn& output,
                            Coverage& cov) const {
   // The harness calls this for the cycle items, in order; any other order replays.
-  if (!cover_ || index < cover_->next) cover_ = std::make_shared<CoverState>();
+  if (!cover_ || index < cover_->next) cover_ = std::make_shared<CoverState>(options_.video_cells);
   CoverState& c = *cover_;
   for (; c.next < index; ++c.next) {
     const Txn& t = items[c.next];
@@ -413,8 +490,8 @@ void VideoUnitBlock::cover(const std::vector<Txn>& items, size_t index, const Tx
       continue;
     }
     const video::VideoUnit::Counts before = c.unit.counts();
-    Txn out, req;
-    c.unit.step(t, &out, &req);
+    Txn out;
+    c.unit.step(t, &out);
     const video::VideoUnit::Counts after = c.unit.counts();
     if (after.dropped > before.dropped) ++cov[kDropped];
     if (after.overruns > before.overruns) ++cov[kOverrun];
@@ -427,12 +504,13 @@ void VideoUnitBlock::cover(const std::vector<Txn>& items, size_t index, const Tx
       if (f.height() == 2) ++cov[kTwoLine];
     }
   }
-  Txn out, req;
-  c.unit.step(items[index], &out, &req);
+  Txn out;
+  c.unit.step(items[index], &out);
   ++c.next;
   const video::VideoMap& m = c.unit.map();
   if (m.config().format.planes == fmts::kPlanes) ++cov[kFourPlanes];
   if (output.f[D::out_granted] != 0) ++cov[kGranted];
+  if (items[index].f[D::cycle_sampler] != 0 && output.f[D::out_granted] == 0) ++cov[kLostCycle];
   const bool access = output.f[D::out_write] != 0 || output.f[D::out_read] != 0;
   if (access && items[index].f[D::cycle_sampler] != 0) ++cov[kForced];
   if (output.f[D::out_write] != 0) {

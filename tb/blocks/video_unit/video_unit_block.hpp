@@ -4,14 +4,15 @@
 // (000 §11-12; golden/texram/video/video_map.hpp, rtl/texram/tmu_video_unit.sv,
 // hls/texram/video_unit_sc.hpp, docs/video.md).
 //
-// The block is VideoMap at 8-cell rows and 8 buffers a bank, with a read queue of 64 and 16-bit
-// frame tags. Channels (video_unit.json): cfg is the format (sides up to 2^9), the two buffers'
-// bases and the arbiter's bounds; in takes one item of the port (no output); an item of cycle is
-// one memory cycle with whether the sampler wants it, and gives one output: whether the sampler
-// got it, the access that started (also a request on mem_req: a write with its row, or a read of
-// a row of the line above, whose cells come back on mem_resp) and whether the front buffer was
-// swapped. stat: frames shown, frames dropped, overruns, late reads, lost writes, forced
-// accesses. The memory (VideoMemory) answers a read after 1 to 3 cycles.
+// The block is VideoMap at 8-cell rows (--video-cells 512: the chip's rows of a page, rtl
+// variant "page") and 8 buffers a bank, with a read queue of 64 and 16-bit frame tags. Channels
+// (video_unit.json): cfg is the format (sides up to 2^9), the two buffers' bases and the
+// arbiter's bounds; in takes one item of the port (no output); an item of cycle is one memory
+// cycle with whether the sampler wants it, and gives one output: whether the sampler got it, the
+// access that started (also requests on mem_req, one per 8-cell word of the row: writes of its
+// cells, or reads of a row of the line above, whose words come back on mem_resp) and whether the
+// front buffer was swapped. stat: frames shown, frames dropped, overruns, late reads, lost
+// writes, forced accesses. The memory (VideoMemory) answers a read after 1 to 3 cycles.
 //
 // The stimulus: runs of frames of a format (1 x 1 to 64 x 64, progressive and interlaced, one
 // and four planes; interlaced lines of at most 64 bytes, whose reads fit the queue) with the
@@ -36,22 +37,28 @@ TMU_DESCRIBE(video_unit)
 
 namespace tmu::tb {
 
-// The unit's VideoMap for a configuration item (8-cell rows, 8 buffers a bank), and its limits.
-texram::video::VideoMapConfig video_unit_config(const Txn& cfg);
+// The cells of the unit's row buffers: the block's (rtl variant "") and a page's, the chip's
+// (rtl variant "page", BlockOptions::video_cells).
+inline constexpr uint32_t kVideoUnitCells = 8;
+inline constexpr uint32_t kVideoUnitPageCells = 512;
+
+// The unit's VideoMap for a configuration item (rows of `cells`, 8 buffers a bank), and its
+// limits.
+texram::video::VideoMapConfig video_unit_config(const Txn& cfg, uint32_t cells = kVideoUnitCells);
 inline constexpr size_t kVideoUnitReadQueue = 64;
 inline constexpr int kVideoUnitMaxLog2 = 9;
 
 // The configuration item of a video map (8-cell rows whatever `config` says).
 Txn video_unit_config_item(const texram::video::VideoMapConfig& config);
-// What a render feeds the unit (render/video_unit_feed): the configuration item of `config`,
-// then each frame's port items, each followed by the same number of memory cycles, and cycles
-// after the frame until it is swapped in and every row buffer is written; the sampler leaves
-// every cycle to the unit (the render's pixel pass runs between two frames' feeds). The rate is
-// the fastest of one texel in 1, 2, 4, ... 16 cycles at which every frame is shown whole (an
-// interlaced four-plane line's reads of the line above hold the writes back while the port
-// goes on: at the full rate, 8 row buffers a bank of 8 cells overflow). Throws
-// std::runtime_error when no such rate exists, or the read queue overflows (an interlaced line
-// wider than the unit reads).
+// What a render feeds the unit (render/video_unit_feed) at rows of config.arbiter.segment_cells
+// (8 or 512): the configuration item of `config`, then each frame's port items, each followed by
+// the same number of memory cycles, and cycles after the frame until it is swapped in and every row
+// buffer is written; the sampler leaves every cycle to the unit (the render's pixel pass runs
+// between two frames' feeds). The rate is the fastest of one texel in 1, 2, 4, ... 16 cycles at
+// which every frame is shown whole (an interlaced four-plane line's reads of the line above hold
+// the writes back while the port goes on: at the full rate, 8 row buffers a bank of 8 cells
+// overflow). Throws std::runtime_error when no such rate exists, or the read queue overflows (an
+// interlaced line wider than the unit reads).
 struct VideoUnitFeedItems {
   std::vector<Txn> items;
   int cycles_per_item = 1;
@@ -65,9 +72,13 @@ class VideoUnitBlock : public DescribedBlockOf<VideoUnitBlock> {
   explicit VideoUnitBlock(const BlockOptions& options = {});
   std::vector<Txn> setup_items() const override;
   std::unique_ptr<Environment> environment(uint64_t seed) const override;
+  std::string variant() const override;
+  std::string repro_options() const override;
   TMU_BLOCK_PIECES;
 
  private:
+  std::vector<Txn> workload_items() const;
+
   BlockOptions options_;
   // cover() sees the items in order: the golden unit over them.
   struct CoverState;
