@@ -86,7 +86,8 @@ std::string VideoRenderReport::text() const {
       "at the video's rate;\n  fed: the cycles the frame took until its swap; lost: the "
       "sampler's cycles the writes and reads took,\n  faults included; writes, reads: row-buffer "
       "accesses; unit = golden: the video unit at {} (rows of a page,\n  its rate below), its "
-      "row writes, and its two buffers at the swap equal to the golden path's, cell for cell)\n",
+      "row writes; its writes and reads, and its two buffers at the swap cell for cell, equal\n"
+      "  to the golden path's)\n",
       engine);
   for (size_t i = 0; i < units.size(); ++i) {
     const UnitRunReport& u = units[i];

@@ -48,17 +48,17 @@ texram::video::VideoMapConfig video_unit_config(const Txn& cfg, uint32_t cells =
 inline constexpr size_t kVideoUnitReadQueue = 64;
 inline constexpr int kVideoUnitMaxLog2 = 9;
 
-// The configuration item of a video map (8-cell rows whatever `config` says).
+// The configuration item of a video map (the rows are the block's option, not an item's).
 Txn video_unit_config_item(const texram::video::VideoMapConfig& config);
 // What a render feeds the unit (render/video_unit_feed) at rows of config.arbiter.segment_cells
 // (8 or 512): the configuration item of `config`, then each frame's port items, each followed by
 // the same number of memory cycles, and cycles after the frame until it is swapped in and every row
 // buffer is written; the sampler leaves every cycle to the unit (the render's pixel pass runs
 // between two frames' feeds). The rate is the fastest of one texel in 1, 2, 4, ... 16 cycles at
-// which every frame is shown whole (an interlaced four-plane line's reads of the line above hold
-// the writes back while the port goes on: at the full rate, 8 row buffers a bank of 8 cells
-// overflow). Throws std::runtime_error when no such rate exists, or the read queue overflows (an
-// interlaced line wider than the unit reads).
+// which every frame is shown whole (with 8-cell rows an interlaced four-plane line's reads of the
+// line above hold the writes back while the port goes on, and at the full rate 8 row buffers a
+// bank overflow; at a page one a cycle serves). Throws std::runtime_error when no such rate
+// exists, or the read queue overflows (an interlaced line wider than the unit reads).
 struct VideoUnitFeedItems {
   std::vector<Txn> items;
   int cycles_per_item = 1;
