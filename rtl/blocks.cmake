@@ -409,6 +409,9 @@ tmu_mutant(video_rows read_overlay FILE texram/tmu_video_rows.sv
 tmu_mutant(video_rows drained FILE texram/tmu_video_rows.sv
   FROM "!(freeing && IdW'(i) == writing_now)" TO "1'b1"
   WHY "the held frame's last write is still counted in the cycle it ends: its swap comes a cycle late")
+tmu_mutant(video_rows plain_tags FILE texram/tmu_video_rows.sv
+  FROM "(!rd_mask[c] || not_before(tag_q[rd_id], rd_best[c]))" TO "(!rd_mask[c] || tag_q[rd_id] >= rd_best[c])"
+  WHY "tags compared as plain numbers: after the wrap (0xFFFE, then 1) a read takes the older frame's cell from the row buffers")
 tmu_mutant(video_rows unreset FILE texram/tmu_video_rows.sv EXPECT x-leak
   FROM "      max_busy_q  <= '0;\n" TO ""
   WHY "the busy-buffer high-water mark starts where its flops happen to be")

@@ -115,10 +115,14 @@ class VideoRowsSc : public sc_core::sc_module {
                      static_cast<uint32_t>(cfg_read_wait_i.read()));
       if (put_valid_i.read() && put_ready_o.read()) {
         rows.put(static_cast<unsigned>(put_bank_i.read()), static_cast<uint32_t>(put_addr_i.read()),
-                 static_cast<uint8_t>(put_value_i.read()), put_tag_i.read());
+                 static_cast<uint8_t>(put_value_i.read()), static_cast<uint32_t>(put_tag_i.read()));
       }
-      if (flush_valid_i.read() && flush_ready_o.read()) rows.flush(flush_tag_i.read());
-      if (hold_valid_i.read() && hold_ready_o.read()) rows.hold_after(hold_tag_i.read());
+      if (flush_valid_i.read() && flush_ready_o.read()) {
+        rows.flush(static_cast<uint32_t>(flush_tag_i.read()));
+      }
+      if (hold_valid_i.read() && hold_ready_o.read()) {
+        rows.hold_after(static_cast<uint32_t>(hold_tag_i.read()));
+      }
       if (read_valid_i.read() && read_ready_o.read()) {
         rows.request_read(static_cast<unsigned>(read_bank_i.read()),
                           static_cast<uint32_t>(read_addr_i.read()) / kCells);

@@ -11,7 +11,9 @@
 ///          (counted); a buffer whose every cell is written becomes ready (queued).
 ///   flush  frame `tag` ends: each buffer collecting for it becomes ready, one a clock in
 ///          buffer order (the item is taken when none is left).
-///   hold   the swap barrier: ready buffers of frames above `tag` wait (0xFFFF: none).
+///   hold   the swap barrier: ready buffers of frames after `tag` wait (0xFFFF: none).
+/// Tags wrap (golden frame_tag: 1 .. 0xFFFE, then 1) and compare as serial numbers: a is b or
+/// later when a - b, modulo 2^16, is below 0x8000 (the frames in the rows at once are a few).
 ///   read   a row read for the line above (bank, the row's address), queued (ReadDepth).
 ///   cycle  one memory cycle; `sampler`: the sampler wants it. Its output: whether the sampler
 ///          got it, and the access started in it (a read's mask and data: the cells of the row a
@@ -233,11 +235,18 @@ module tmu_video_rows #(
 
   assign sampler = cycle_sampler_i;
 
+  // Tag a is tag b or a later frame's (golden tag_not_before).
+  function automatic logic not_before(input logic [TagW-1:0] a, input logic [TagW-1:0] b);
+    logic [TagW-1:0] d;
+    d = a - b;
+    not_before = !d[TagW-1];
+  endfunction
+
   always_comb begin
     wr_found = 1'b0;
     wr_k     = '0;
     for (int k = NB - 1; k >= 0; k--) begin
-      if (QW'(k) < rq_n_q && rq_tag_q[k] <= hold_q) begin
+      if (QW'(k) < rq_n_q && (hold_q == '1 || not_before(hold_q, rq_tag_q[k]))) begin
         wr_found = 1'b1;
         wr_k     = QW'(k);
       end
@@ -279,7 +288,7 @@ module tmu_video_rows #(
         for (int j = 0; j < Buffers; j++) begin
           rd_id = (IdW'(rd_bank_q[0]) << SelW) + IdW'(j);
           if (st_q[rd_id] != Free && seg_q[rd_id] == rd_seg_q[0] && valid_q[rd_id][c] &&
-              (!rd_mask[c] || tag_q[rd_id] >= rd_best[c])) begin
+              (!rd_mask[c] || not_before(tag_q[rd_id], rd_best[c]))) begin
             rd_mask[c]        = 1'b1;
             rd_best[c]        = tag_q[rd_id];
             rd_data[8*c +: 8] = data_q[rd_id][8*c +: 8];

@@ -62,8 +62,8 @@
 /// drained, gets (its output dropped). The rows' buffers are empty then and their counters, like
 /// the port's, run on. max_wait and read_wait go straight to the rows.
 ///
-/// Tags are 16 bits (VideoTag) and 0xFFFF means no frame held: the unit does not handle the
-/// wrap after 65 534 frames (future work).
+/// Tags are 16 bits (VideoTag): frames 1 .. 0xFFFE, then 1 again; 0xFFFF means no frame held.
+/// The rows compare them as serial numbers, so a video runs for ever.
 ///
 /// Example: a 2 x 4 interlaced one-plane video, base1 = 512, after reset: frame 1 goes to
 /// buffer 1. Item (0, 2), field 1's last line, requests line 0's reads: one cell a bank at 512,
@@ -568,7 +568,8 @@ module tmu_video_unit #(
     rf_n_d     = rf_n_q + CountW'(rf_push) - CountW'(rf_pop);
 
     if (begin_frame) begin
-      tag_d = tag_q + TagW'(1);
+      // Tags 1 .. 0xFFFE, then 1 again (0xFFFF names no frame: golden frame_tag).
+      tag_d = (tag_q == {{(TagW - 1){1'b1}}, 1'b0}) ? TagW'(1) : tag_q + TagW'(1);
       cur_d = !newest_q;
     end
 

@@ -99,5 +99,35 @@ TEST(VideoRowsTest, WaitsSaturateAtSixteenBits) {
   testing::expect_outputs(VideoRowsBlock(), items, D::out_wait, want);
 }
 
+// Frame tags wrap (golden frame_tag: ..., 0xFFFE, then 1) and compare as serial numbers, so the
+// frame after the wrap is the newer one, alike on golden, hls and rtl. Two buffers of bank 0
+// collect row 0, frame 0xFFFE's (cell 0 = 10) and then frame 1's (cell 0 = 20): a read of the
+// row takes frame 1's cell; with the barrier on frame 0xFFFE, frame 0xFFFE's row is written and
+// frame 1's waits until the barrier is lifted. (Compared as plain numbers, 0xFFFE would be the
+// newer: the read would take 10, and frame 1's row would go at once.)
+TEST(VideoRowsTest, FrameTagsWrapAndCompareAsSerialNumbers) {
+  using D = desc::video_rows;
+  const BlockPorts& t = D::table();
+  const auto cycle = [&] { return channel_item(t, "cycle", {0}); };
+  const std::vector<Txn> items = {
+      channel_item(t, "cfg", {4, 0}),
+      channel_item(t, "put", {0, 0, 10, 0xFFFE}),
+      channel_item(t, "put", {0, 0, 20, 1}),
+      channel_item(t, "read", {0, 0}),
+      cycle(),  // the read, a page fault: two cycles
+      cycle(),
+      channel_item(t, "hold", {0xFFFE}),
+      channel_item(t, "flush", {1}),
+      channel_item(t, "flush", {0xFFFE}),
+      cycle(),  // frame 0xFFFE's row (the page is open)
+      cycle(),  // frame 1's waits
+      channel_item(t, "hold", {0xFFFF}),
+      cycle(),  // frame 1's row
+  };
+  testing::expect_outputs(VideoRowsBlock(), items, D::out_read, {1, 0, 0, 0, 0});
+  testing::expect_outputs(VideoRowsBlock(), items, D::out_write, {0, 0, 1, 0, 1});
+  testing::expect_outputs(VideoRowsBlock(), items, D::out_data, {20, 0, 10, 0, 20});
+}
+
 }  // namespace
 }  // namespace tmu::tb

@@ -27,7 +27,7 @@ RowBuffers::RowBuffers(const ArbiterConfig& config, BankImage& memory)
   }
 }
 
-RowBuffers::Buffer* RowBuffers::collecting(unsigned bank, uint32_t segment, uint64_t tag) {
+RowBuffers::Buffer* RowBuffers::collecting(unsigned bank, uint32_t segment, uint32_t tag) {
   const size_t n = static_cast<size_t>(config_.buffers_per_bank);
   Buffer* free = nullptr;
   for (size_t i = bank * n; i < (bank + 1) * n; ++i) {
@@ -45,7 +45,7 @@ RowBuffers::Buffer* RowBuffers::collecting(unsigned bank, uint32_t segment, uint
   return free;
 }
 
-void RowBuffers::put(unsigned bank, uint32_t address, uint8_t value, uint64_t tag) {
+void RowBuffers::put(unsigned bank, uint32_t address, uint8_t value, uint32_t tag) {
   ++stats_.cells_in;
   if (config_.direct) {
     memory_.at(bank).at(address) = value;
@@ -74,7 +74,7 @@ void RowBuffers::make_ready(size_t id) {
   stats_.max_ready = std::max(stats_.max_ready, ready_.size());
 }
 
-void RowBuffers::flush(uint64_t tag) {
+void RowBuffers::flush(uint32_t tag) {
   for (size_t i = 0; i < buffers_.size(); ++i) {
     if (buffers_[i].state == State::kCollecting && buffers_[i].tag == tag) make_ready(i);
   }
@@ -85,14 +85,14 @@ const RowBuffers::Buffer* RowBuffers::newest_holding(unsigned bank, uint32_t seg
   const Buffer* newest = nullptr;
   for (const Buffer& b : buffers_) {
     if (b.state != State::kFree && b.bank == bank && b.segment == segment && b.valid[i] &&
-        (newest == nullptr || b.tag >= newest->tag)) {
+        (newest == nullptr || tag_not_before(b.tag, newest->tag))) {
       newest = &b;
     }
   }
   return newest;
 }
 
-size_t RowBuffers::buffers_of(uint64_t tag) const {
+size_t RowBuffers::buffers_of(uint32_t tag) const {
   return static_cast<size_t>(std::count_if(buffers_.begin(), buffers_.end(), [&](const Buffer& b) {
     return b.state != State::kFree && b.tag == tag;
   }));
@@ -192,8 +192,9 @@ bool RowBuffers::cycle(bool sampler_wants) {
     read_access();
   } else if (busy_ == 0 && !ready_.empty()) {
     // The oldest ready buffer not held by the swap barrier.
-    auto it = std::find_if(ready_.begin(), ready_.end(),
-                           [&](size_t id) { return buffers_[id].tag <= hold_after_; });
+    auto it = std::find_if(ready_.begin(), ready_.end(), [&](size_t id) {
+      return hold_after_ == kTagNone || tag_not_before(hold_after_, buffers_[id].tag);
+    });
     if (it != ready_.end()) {
       const size_t id = *it;
       const bool due = stats_.cycles - buffers_[id].ready_cycle >= config_.max_wait;

@@ -67,6 +67,18 @@ struct ArbiterStats {
   }
 };
 
+// A frame's tag in the row buffers, as the hardware keeps it (formats::kVideoTag, 16 bits):
+// frame n >= 1 of a video map is tag 1 + (n - 1) mod 0xFFFE, so 1 .. 0xFFFE and then 1 again;
+// 0xFFFF (kTagNone) names no frame, the swap barrier lifted. Tags compare as serial numbers,
+// a - b taken modulo 2^16 as a signed number: the frames in the rows at once are a few (the
+// one held for its swap and the next, or a dropped one), far fewer than half the tags.
+inline constexpr uint32_t kTagNone = 0xFFFF;
+constexpr uint32_t frame_tag(uint64_t frame) {
+  return frame == 0 ? 0 : static_cast<uint32_t>((frame - 1) % 0xFFFE) + 1;
+}
+// Tag a is tag b or a later frame's.
+constexpr bool tag_not_before(uint32_t a, uint32_t b) { return ((a - b) & 0xFFFFu) < 0x8000u; }
+
 class RowBuffers {
  public:
   // `memory` is the chip's banks the writes go to. Throws std::invalid_argument for a segment
@@ -75,17 +87,17 @@ class RowBuffers {
 
   const ArbiterConfig& config() const { return config_; }
 
-  // One cell write of frame `tag` (tags ascend frame by frame).
-  void put(unsigned bank, uint32_t address, uint8_t value, uint64_t tag);
+  // One cell write of frame `tag` (frame_tag: tags ascend frame by frame, and wrap).
+  void put(unsigned bank, uint32_t address, uint8_t value, uint32_t tag);
   // Frame `tag` ends: every buffer collecting its cells becomes ready.
-  void flush(uint64_t tag);
-  // Writes of frames with a tag above `tag` wait (the swap barrier); ~0 holds none.
-  void hold_after(uint64_t tag) { hold_after_ = tag; }
+  void flush(uint32_t tag);
+  // Writes of frames after frame `tag` wait (the swap barrier); kTagNone holds none.
+  void hold_after(uint32_t tag) { hold_after_ = tag; }
   // No buffer holds a cell of the frame the barrier names (its tag): that frame is in the
   // memory, and the video unit may swap it in. True when no frame is named.
   bool held_frame_written() const { return buffers_of(hold_after_) == 0; }
   // Buffers holding cells of frame `tag`, in any state but free (0: all in memory).
-  size_t buffers_of(uint64_t tag) const;
+  size_t buffers_of(uint32_t tag) const;
   size_t buffers_busy() const;  // No buffer ready or being written and no read waiting (collecting
                                 // buffers may remain).
   bool idle() const { return ready_.empty() && reads_.empty() && busy_ == 0; }
@@ -134,14 +146,14 @@ class RowBuffers {
     State state = State::kFree;
     unsigned bank = 0;
     uint32_t segment = 0;  // address / segment_cells
-    uint64_t tag = 0;
+    uint32_t tag = 0;
     uint64_t ready_cycle = 0;
     uint32_t count = 0;  // cells written
     std::vector<uint8_t> data;
     std::vector<bool> valid;
   };
-  Buffer* collecting(unsigned bank, uint32_t segment, uint64_t tag);
-  // The newest buffer (highest tag, then last) not free holding cell i of the segment.
+  Buffer* collecting(unsigned bank, uint32_t segment, uint32_t tag);
+  // The newest buffer (the latest tag, then the last) not free holding cell i of the segment.
   const Buffer* newest_holding(unsigned bank, uint32_t segment, uint32_t i) const;
   void make_ready(size_t id);
   void write_access(size_t id);
@@ -153,7 +165,7 @@ class RowBuffers {
   std::vector<Buffer> buffers_;  // bank b's are b * buffers_per_bank ...
   std::deque<size_t> ready_;     // in order of becoming ready
   std::array<std::optional<uint32_t>, 8> open_page_{};
-  uint64_t hold_after_ = ~uint64_t{0};
+  uint32_t hold_after_ = kTagNone;
   size_t writing_ = 0;    // the buffer of a write in its second (page fault) cycle
   bool reading_ = false;  // the access in progress is a read
   struct Read {

@@ -82,7 +82,7 @@ void VideoMap::begin_frame() {
 void VideoMap::end_frame(bool complete) {
   FrameRecord& f = frames_.back();
   f.end_cycle = cycles();
-  rows_.flush(f.tag);
+  rows_.flush(frame_tag(f.tag));
   if (!complete) {
     f.dropped = true;
     return;
@@ -95,7 +95,8 @@ void VideoMap::end_frame(bool complete) {
   f.complete = true;
   newest_ = f.buffer;
   pending_ = frames_.size() - 1;
-  rows_.hold_after(f.tag);  // the next frame writes the front buffer: held until the swap
+  rows_.hold_after(frame_tag(f.tag));  // the next frame writes the front buffer: held until
+                                       // the swap
 }
 
 void VideoMap::read_line_above(uint32_t above, uint32_t line) {
@@ -170,7 +171,7 @@ void VideoMap::receive(const VideoItem& item) {
     writes_.clear();
     s.step(in, writes_);
     for (const CellWrite& w : writes_)
-      rows_.put(w.cell.bank, base + w.cell.address, w.value, f.tag);
+      rows_.put(w.cell.bank, base + w.cell.address, w.value, frame_tag(f.tag));
   }
   if (r.frame_end) end_frame(true);
 }
@@ -193,7 +194,7 @@ bool VideoMap::cycle(bool sampler_wants) {
     f.swap_cycle = cycles();
     swapped_ = true;
     pending_.reset();
-    rows_.hold_after(~uint64_t{0});
+    rows_.hold_after(kTagNone);
   }
   return granted;
 }

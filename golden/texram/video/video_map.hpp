@@ -55,7 +55,7 @@ struct VideoMapConfig {
 
 // One frame the port began.
 struct FrameRecord {
-  uint64_t tag = 0;  // frames begun so far, 1 for the first
+  uint64_t tag = 0;  // frames begun so far, 1 for the first (the rows' tag: frame_tag(tag))
   int buffer = 0;    // the buffer it was written to
   bool complete = false;
   bool dropped = false;

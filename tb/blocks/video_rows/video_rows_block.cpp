@@ -49,13 +49,13 @@ class Rows {
   void step(const Txn& item, Txn* out) {
     const auto op = static_cast<int>(item.f[0]);
     if (op == D::op_put) {
-      rows_->put(static_cast<unsigned>(item.f[D::put_bank]),
-                 static_cast<uint32_t>(item.f[D::put_addr]),
-                 static_cast<uint8_t>(item.f[D::put_value]), item.f[D::put_tag]);
+      rows_->put(
+          static_cast<unsigned>(item.f[D::put_bank]), static_cast<uint32_t>(item.f[D::put_addr]),
+          static_cast<uint8_t>(item.f[D::put_value]), static_cast<uint32_t>(item.f[D::put_tag]));
     } else if (op == D::op_flush) {
-      rows_->flush(item.f[D::flush_tag]);
+      rows_->flush(static_cast<uint32_t>(item.f[D::flush_tag]));
     } else if (op == D::op_hold) {
-      rows_->hold_after(item.f[D::hold_tag]);
+      rows_->hold_after(static_cast<uint32_t>(item.f[D::hold_tag]));
     } else if (op == D::op_read) {
       if (rows_->reads_pending() >= kVideoRowsReadQueue) {
         throw std::runtime_error(fmt::format(
@@ -162,10 +162,11 @@ class Stimulus {
     add(read_item(bank, addr));
     return true;
   }
-  // One random frame `tag`: rows over pages 0..3 of random banks, full or partial, their cells
-  // shuffled, memory cycles between them at the sampler rate, now and then a read; then the
-  // frame's flush and a tail of cycles.
-  void frame(uint64_t tag, std::mt19937_64& rng) {
+  // One random frame, the n-th (its tag video::frame_tag(n), wrapping after 0xFFFE): rows over
+  // pages 0..3 of random banks, full or partial, their cells shuffled, memory cycles between
+  // them at the sampler rate, now and then a read; then the frame's flush and a tail of cycles.
+  void frame(uint64_t n, std::mt19937_64& rng) {
+    const uint32_t tag = video::frame_tag(n);
     const double rate = std::array<double, 5>{0.0, 0.3, 0.7, 0.95, 1.0}[rng() % 5];
     const int rows = uniform(rng, 1, rng() % 8 == 0 ? 40 : 12);
     std::vector<std::array<uint32_t, 3>> cells;  // bank, address, value
@@ -180,7 +181,7 @@ class Stimulus {
       }
     }
     std::shuffle(cells.begin(), cells.end(), rng);
-    if (rng() % 5 == 0) add(hold_item(tag - 1));
+    if (rng() % 5 == 0) add(hold_item(video::frame_tag(n - 1)));  // the frame before
     for (const auto& [bank, addr, value] : cells) {
       add(put_item(bank, addr, static_cast<uint8_t>(value), tag));
       if (rng() % 3 == 0) cycles(uniform(rng, 1, 4), rate, rng);
@@ -276,6 +277,20 @@ std::vector<Txn> VideoRowsBlock::directed_items() const {
   for (uint32_t r = 0; r < 9; ++r) row(7, 8 * r, 6, 2);
   s.add(flush_item(6));
   s.cycles(24, 0.5, rng);
+  // Tags wrap: frame 1 after frame 0xFFFE is the newer one (VideoRowsTest.FrameTagsWrap...). A
+  // read of a row both frames' buffers hold takes frame 1's cell; the barrier on frame 0xFFFE
+  // holds frame 1's row while frame 0xFFFE's goes.
+  s.add(cfg_item(4, 0));
+  s.add(put_item(1, 4000, 10, 0xFFFE));
+  s.add(put_item(1, 4000, 20, 1));
+  s.read(1, 4000);
+  s.cycles(2, 0.0, rng);
+  s.add(hold_item(0xFFFE));
+  s.add(flush_item(1));
+  s.add(flush_item(0xFFFE));
+  s.cycles(4, 0.0, rng);
+  s.add(hold_item(kHoldNone));
+  s.cycles(4, 0.0, rng);
   s.add(cfg_item(4, 0));
   return items;
 }
@@ -283,13 +298,14 @@ std::vector<Txn> VideoRowsBlock::directed_items() const {
 std::vector<Txn> VideoRowsBlock::random_items(std::mt19937_64& rng, size_t count) const {
   std::vector<Txn> items;
   Stimulus s(items);
-  uint64_t tag = 1;
+  // Half the runs go through the tags' wrap (frame 0xFFFE, then tag 1), some 15 frames in.
+  uint64_t n = rng() % 2 == 0 ? 1 : 0xFFF0;
   while (items.size() < count) {
     if (rng() % 4 == 0) {
       const uint32_t l = std::array<uint32_t, 6>{0, 1, 3, 8, 16, 64}[rng() % 6];
       s.add(cfg_item(l, std::array<uint32_t, 3>{0, 1, 5}[rng() % 3]));
     }
-    s.frame(tag++, rng);
+    s.frame(n++, rng);
   }
   return items;
 }
