@@ -17,8 +17,7 @@ using UnitPorts = tb::desc::video_unit;
 // The unit's run replayed: its writes into the banks (an access: a row's words, one request
 // each), the buffers snapshotted at each swap.
 std::vector<VideoUnitFrame> replay(const video::VideoMap& layout, const tb::RunResult& run) {
-  constexpr uint32_t kWordCells = 8;
-  const uint32_t words = layout.config().arbiter.segment_cells / kWordCells;
+  const uint32_t words = layout.config().arbiter.segment_cells / tb::kVideoUnitWordCells;
   const uint32_t cells = layout.geometry().bank_cells();
   texram::BankImage memory;
   const uint32_t end = std::max(layout.buffer_base(0), layout.buffer_base(1)) + cells + 8;
@@ -38,7 +37,7 @@ std::vector<VideoUnitFrame> replay(const video::VideoMap& layout, const tb::RunR
       for (uint32_t w = 0; w < words; ++w) {
         const tb::Txn& q = requests[r++];
         if (q.f[UnitPorts::mem_req_write] == 0) continue;
-        for (uint32_t i = 0; i < kWordCells; ++i) {
+        for (uint32_t i = 0; i < tb::kVideoUnitWordCells; ++i) {
           if (q.f[UnitPorts::mem_req_mask + i] == 0) continue;
           memory.at(q.f[UnitPorts::mem_req_bank]).at(q.f[UnitPorts::mem_req_addr] + i) =
               static_cast<uint8_t>(q.f[UnitPorts::mem_req_data + i]);

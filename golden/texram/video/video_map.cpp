@@ -126,9 +126,9 @@ void VideoMap::capture(const std::vector<uint8_t>& memory_cells) {
   const LineRead r = line_reads_.front();
   line_reads_.pop_front();
   const int planes = config_.format.planes;
+  const uint32_t first = r.base + line_start(r.line);
   for (uint32_t i = 0; i < n; ++i) {
     const uint32_t address = a.segment * n + i;
-    const uint32_t first = r.base + line_start(r.line);
     if (address < first || address - first >= line_cells()) continue;  // another line's cell
     const uint32_t rel = address - first;
     const uint32_t x = 2 * (rel / static_cast<uint32_t>(planes)) + (a.bank & 1u);
@@ -216,6 +216,15 @@ Pyramid8 VideoMap::read_pyramid(int buffer, int plane) const {
   return p;
 }
 
+void at_rate(size_t n, VideoRate rate, const std::function<void(size_t)>& arrive,
+             const std::function<void()>& cycle) {
+  uint64_t acc = 0;
+  for (size_t i = 0; i < n;) {
+    for (acc += rate.num; acc >= rate.den && i < n; acc -= rate.den) arrive(i++);
+    cycle();
+  }
+}
+
 uint64_t run(VideoMap& map, const std::vector<VideoItem>& items, const RunOptions& options) {
   std::mt19937_64 rng(options.seed);
   auto wants = [&] {
@@ -235,16 +244,8 @@ uint64_t run(VideoMap& map, const std::vector<VideoItem>& items, const RunOption
     if (options.on_cycle) options.on_cycle(map, granted);
     ++n;
   };
-  uint64_t acc = 0;
-  size_t i = 0;
-  while (i < items.size()) {
-    acc += options.rate.num;
-    while (acc >= options.rate.den && i < items.size()) {
-      acc -= options.rate.den;
-      map.receive(items[i++]);
-    }
-    step();
-  }
+  at_rate(
+      items.size(), options.rate, [&](size_t i) { map.receive(items[i]); }, step);
   if (options.drain_cycles > 0) {
     for (uint64_t k = 0; k < options.drain_cycles; ++k) step();
   } else {

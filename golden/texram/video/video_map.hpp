@@ -177,9 +177,16 @@ struct RunOptions {
   std::function<void(const VideoMap&, bool granted)> on_cycle;
 };
 
-// Feeds `items` to `map` at the rate (an item arrives in cycle t when the rate's accumulator
-// passes a whole texel), one memory cycle at a time, then runs until the last frame is swapped
-// in and every row buffer is written (or drain_cycles). Returns the cycles run.
+// The arrivals of n items at a rate, cycle by cycle: in each cycle the accumulator gains
+// rate.num, and each whole texel (rate.den) it holds is an item arriving, arrive(i) for item i,
+// before cycle(); until the cycle of the last item. run()'s schedule, and the video unit's
+// figure workload's (tb/blocks/video_unit).
+void at_rate(size_t n, VideoRate rate, const std::function<void(size_t)>& arrive,
+             const std::function<void()>& cycle);
+
+// Feeds `items` to `map` at the rate (at_rate: an item arrives in cycle t when the rate's
+// accumulator passes a whole texel), one memory cycle at a time, then runs until the last frame is
+// swapped in and every row buffer is written (or drain_cycles). Returns the cycles run.
 uint64_t run(VideoMap& map, const std::vector<VideoItem>& items, const RunOptions& options);
 
 }  // namespace tmu::texram::video

@@ -11,8 +11,6 @@ using D = desc::video_unit;
 
 namespace {
 
-constexpr uint32_t kRowCells = 8;
-
 // The fields whose change starts a new video map (the waits do not).
 bool same_map(const Txn& a, const Txn& b) {
   for (size_t f : {D::cfg_log2_w, D::cfg_log2_h, D::cfg_interlaced, D::cfg_four_planes,
@@ -41,7 +39,7 @@ uint8_t VideoMemory::cell(unsigned bank, uint32_t address) const {
 void VideoMemory::drive(EnvPorts& ports) {
   ChannelValue& resp = ports.responses[0];
   resp.valid = !responses_.empty() && responses_.front().due_cycle == cycle_;
-  for (uint32_t i = 0; i < kRowCells; ++i) {
+  for (uint32_t i = 0; i < kVideoUnitWordCells; ++i) {
     resp.data.f[D::mem_resp_data + i] = resp.valid ? responses_.front().cells[i] : rng_() & 0xFFu;
   }
 }
@@ -52,15 +50,15 @@ void VideoMemory::sample(const EnvPorts& ports) {
   if (req.valid) {
     const auto bank = static_cast<unsigned>(req.data.f[D::mem_req_bank]);
     const auto addr = static_cast<uint32_t>(req.data.f[D::mem_req_addr]);
-    if (uint64_t{addr} + kRowCells > (uint64_t{1} << formats::kBankAddr.width())) {
+    if (uint64_t{addr} + kVideoUnitWordCells > (uint64_t{1} << formats::kBankAddr.width())) {
       if (error_.empty()) {
         error_ = fmt::format("video memory: a row at bank {} address {} ends beyond the bank", bank,
                              addr);
       }
     } else if (req.data.f[D::mem_req_write] != 0) {
       std::vector<uint8_t>& b = banks_[bank];
-      if (b.size() < addr + kRowCells) b.resize(addr + kRowCells, 0);
-      for (uint32_t i = 0; i < kRowCells; ++i) {
+      if (b.size() < addr + kVideoUnitWordCells) b.resize(addr + kVideoUnitWordCells, 0);
+      for (uint32_t i = 0; i < kVideoUnitWordCells; ++i) {
         if (req.data.f[D::mem_req_mask + i] != 0) {
           b[addr + i] = static_cast<uint8_t>(req.data.f[D::mem_req_data + i]);
         }
@@ -73,7 +71,7 @@ void VideoMemory::sample(const EnvPorts& ports) {
       if (!responses_.empty() && r.due_cycle <= responses_.back().due_cycle) {
         r.due_cycle = responses_.back().due_cycle + 1;
       }
-      for (uint32_t i = 0; i < kRowCells; ++i) r.cells[i] = cell(bank, addr + i);
+      for (uint32_t i = 0; i < kVideoUnitWordCells; ++i) r.cells[i] = cell(bank, addr + i);
       responses_.push_back(r);
     }
   }

@@ -2,7 +2,8 @@
 // its row buffers to and reads the line above from (tb/blocks/video_unit/video_unit.json).
 //
 // A request (valid for one cycle, no ready: the memory takes every request) is a masked write
-// of a row of 8 cells, applied at once, or a read of a row, answered `latency` cycles after the
+// of a word of 8 cells (kVideoUnitWordCells; a row is one or more), applied at once, or a read
+// of a word, answered `latency` cycles after the
 // request plus 0..jitter drawn per read, with the row's cells as the writes before it left
 // them. Between responses the data bus carries random bits, so a unit that samples it at the
 // wrong time fails. A configuration item with a new format or new buffer bases starts a new
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "blocks/video_unit/video_unit_block.hpp"
 #include "harness/environment.hpp"
 
 namespace tmu::tb {
@@ -34,7 +36,7 @@ class VideoMemory : public Environment {
  private:
   struct Response {
     uint64_t due_cycle;
-    std::array<uint8_t, 8> cells;
+    std::array<uint8_t, kVideoUnitWordCells> cells;
   };
   uint8_t cell(unsigned bank, uint32_t address) const;
 

@@ -40,7 +40,6 @@ video::VideoMapConfig video_unit_config(const Txn& cfg, uint32_t cells) {
 
 namespace {
 
-constexpr uint32_t kWordCells = 8;     // the memory port's word
 constexpr uint64_t kWaitMax = 0xFFFF;  // the RTL's waits saturate at 16 bits
 
 video::VideoItem item_of(const Txn& t) {
@@ -103,13 +102,13 @@ class Unit {
     out->f[D::out_wait] = std::min(a.wait, kWaitMax);
     if (reqs == nullptr) return;
     reqs->clear();
-    for (uint32_t w = 0; w < cells_; w += kWordCells) {
+    for (uint32_t w = 0; w < cells_; w += kVideoUnitWordCells) {
       Txn& req = reqs->emplace_back();
       req.f[D::mem_req_write] = a.kind == Kind::kWrite;
       req.f[D::mem_req_bank] = a.bank;
       req.f[D::mem_req_addr] = a.segment * cells_ + w;
       if (a.kind == Kind::kWrite) {
-        for (uint32_t i = 0; i < kWordCells; ++i) {
+        for (uint32_t i = 0; i < kVideoUnitWordCells; ++i) {
           req.f[D::mem_req_mask + i] = a.mask[w + i];
           req.f[D::mem_req_data + i] = a.data[w + i];
         }
@@ -398,9 +397,9 @@ std::vector<Txn> VideoUnitBlock::directed_items() const {
 }
 
 // The figure's workload (BlockOptions::video_workload) as video::run feeds it in
-// VideoFigureTest: two frames of a 512 x 512 video at 30 frames per second, an item arriving
-// in the cycle the rate's accumulator passes a whole texel, the sampler wanting every cycle,
-// L = 64, then cycles until the last frame is swapped in and every row is written.
+// VideoFigureTest: two frames of a 512 x 512 video at 30 frames per second on video::at_rate's
+// schedule, the sampler wanting every cycle, L = 64, then cycles until the last frame is
+// swapped in and every row is written.
 std::vector<Txn> VideoUnitBlock::workload_items() const {
   const std::string& w = options_.video_workload;
   const video::VideoFormat f{9, 9, w[1] == 'i', w[0] == '4' ? fmts::kPlanes : 1};
@@ -408,19 +407,14 @@ std::vector<Txn> VideoUnitBlock::workload_items() const {
   std::mt19937_64 rng(1);  // unused: the sampler wants every cycle
   Stimulus s(items, rng, options_.video_cells);
   s.configure(f, 0, default_base1(f, 0), 64, 0);
-  const video::VideoRate rate = video::video_rate(512, 512, 30);
   std::vector<video::VideoItem> stream;
   for (uint32_t k = 0; k < 2; ++k) {
     const std::vector<video::VideoItem> v = video::frame_items(f, video::test_frame(f, k));
     stream.insert(stream.end(), v.begin(), v.end());
   }
-  uint64_t acc = 0;
-  for (size_t i = 0; i < stream.size();) {
-    for (acc += rate.num; acc >= rate.den && i < stream.size(); acc -= rate.den) {
-      s.add(in_item(stream[i++]));
-    }
-    s.add(cycle_item(true));
-  }
+  video::at_rate(
+      stream.size(), video::video_rate(512, 512, 30), [&](size_t i) { s.add(in_item(stream[i])); },
+      [&] { s.add(cycle_item(true)); });
   while (s.unit().map().swap_pending() || !s.unit().map().row_buffers().idle()) {
     s.add(cycle_item(true));
   }

@@ -37,6 +37,11 @@ TMU_DESCRIBE(video_unit)
 
 namespace tmu::tb {
 
+// The memory port's word: the cells of a request's data (video_unit.json), a row's access being
+// its cells / this many requests.
+inline constexpr uint32_t kVideoUnitWordCells =
+    desc::video_unit::mem_req_data_end_ - desc::video_unit::mem_req_data_slot_ + 1;
+
 // The cells of the unit's row buffers: the block's (rtl variant "") and a page's, the chip's
 // (rtl variant "page", BlockOptions::video_cells).
 inline constexpr uint32_t kVideoUnitCells = 8;
